@@ -1,0 +1,142 @@
+#include "experiments/config.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "experiments/internal/yaml_reader.h"
+
+namespace toponav::experiments {
+
+using internal::YamlSection;
+
+namespace {
+
+constexpr double kBig = 1e6;
+
+void ReadLabyrinth(YamlSection s, sim::LabyrinthOptions* o) {
+  s.Read("num_rooms", &o->num_rooms, 2, 12);
+  s.Read("grid_cells", &o->grid_cells, 4, 64);
+  s.Read("room_min_cells", &o->room_min_cells, 2, 20);
+  s.Read("room_max_cells", &o->room_max_cells, 2, 20);
+  s.Read("room_separation_cells", &o->room_separation_cells, 0.0, 20.0);
+  s.Read("max_corridor_offset_cells", &o->max_corridor_offset_cells, 1, 64);
+  s.Read("max_straight_run_cells", &o->max_straight_run_cells, 2, 64);
+  s.Read("hall_width", &o->hall_width, 1.0, 1000.0);
+  s.Read("inflate_ratio", &o->inflate_ratio, 0.0, 0.99);
+  s.Read("num_clutter", &o->num_clutter, 0, 1000);
+  s.Read("box_half_size", &o->box_half_size, 0.01, 100.0);
+  s.Read("cylinder_radius", &o->cylinder_radius, 0.01, 100.0);
+  s.Read("clutter_height", &o->clutter_height, 0.01, 100.0);
+  s.Read("clutter_max_wall_gap", &o->clutter_max_wall_gap, 0.2, 100.0);
+  s.Read("start_clearance", &o->start_clearance, 0.0, 500.0);
+  s.Finish();
+}
+
+void ReadOfficePark(YamlSection s, sim::OfficeParkOptions* o) {
+  s.Read("num_buildings", &o->num_buildings, 1, 30);
+  s.Read("candidates_per_round", &o->candidates_per_round, 1, 100000);
+  s.Read("min_building_gap", &o->min_building_gap, 0.0, kBig);
+  s.Read("max_building_gap", &o->max_building_gap, 0.0, kBig);
+  s.Read("scale_min", &o->scale_min, 0.01, 100.0);
+  s.Read("scale_max", &o->scale_max, 0.01, 100.0);
+  s.Read("num_trees", &o->num_trees, 0, 500);
+  s.Read("tree_radius", &o->tree_radius, 0.01, 100.0);
+  s.Read("tree_min_gap", &o->tree_min_gap, 0.0, kBig);
+  s.Read("tree_max_gap", &o->tree_max_gap, 0.0, kBig);
+  s.Read("bounds_margin", &o->bounds_margin, 0.0, kBig);
+  s.Read("start_min_gap", &o->start_min_gap, 0.0, kBig);
+  s.Read("start_max_gap", &o->start_max_gap, 0.0, kBig);
+  s.Finish();
+}
+
+void ReadGuidedMaze(YamlSection s, sim::GuidedMazeOptions* o) {
+  s.Read("cells_x", &o->cells_x, 2, 50);
+  s.Read("cells_y", &o->cells_y, 2, 50);
+  s.Read("corridor_width", &o->corridor_width, 0.1, 1000.0);
+  s.Read("wall_thickness", &o->wall_thickness, 0.1, 1000.0);
+  s.Read("border", &o->border, 0.1, 1000.0);
+  s.Read("guide_path_width", &o->guide_path_width, 0.01, 1000.0);
+  s.Finish();
+}
+
+}  // namespace
+
+void Validate(const Config& c) {
+  try {
+    c.worlds.Validate();
+  } catch (const core::ConfigError& e) {
+    throw core::ConfigError(c.source, "worlds." + e.key(), e.value(), e.problem());
+  }
+  try {
+    c.motion.Validate();
+  } catch (const core::ConfigError& e) {
+    throw core::ConfigError(c.source, e.key(), e.value(), e.problem());
+  }
+  if (c.demo.kinds.empty()) throw core::ConfigError(c.source, "demo.kinds", "[]", "list at least one world kind");
+  for (auto k : c.demo.kinds)
+    if (k == core::WorldKind::kCustom)
+      throw core::ConfigError(c.source, "demo.kinds", "custom", "custom worlds cannot be generated");
+}
+
+Config ParseConfig(const std::string& text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw core::ConfigError(source, "<file>", "", std::string("not valid YAML: ") + e.what());
+  }
+  Config c;
+  c.source = source;
+  YamlSection top(root, source, "");
+  {
+    YamlSection w = top.Section("worlds");
+    ReadLabyrinth(w.Section("labyrinth"), &c.worlds.labyrinth);
+    ReadOfficePark(w.Section("office_park"), &c.worlds.office_park);
+    ReadGuidedMaze(w.Section("guided_maze"), &c.worlds.guided_maze);
+    w.Finish();
+  }
+  {
+    YamlSection m = top.Section("motion");
+    m.Read("step_length", &c.motion.step_length, 0.01, 50.0);
+    m.Read("agent_radius", &c.motion.agent_radius, 0.01, 20.0);
+    m.Read("substeps", &c.motion.substeps, 1, 1000);
+    m.Finish();
+  }
+  {
+    YamlSection p = top.Section("picture");
+    p.Read("pixels_per_unit", &c.picture.pixels_per_unit, 0.1, 50.0);
+    p.Read("max_pixels", &c.picture.max_pixels, 100, 20000);
+    p.Finish();
+  }
+  {
+    YamlSection d = top.Section("demo");
+    std::vector<std::string> kinds;
+    if (d.Has("kinds")) {
+      d.Read("kinds", &kinds);
+      c.demo.kinds.clear();
+      for (const auto& k : kinds) {
+        auto kind = core::ParseWorldKind(k);
+        if (!kind || *kind == core::WorldKind::kCustom)
+          d.Fail("kinds", k, "unknown world kind (labyrinth, office_park, guided_maze)");
+        c.demo.kinds.push_back(*kind);
+      }
+    }
+    d.Read("seed", &c.demo.seed);
+    d.Read("out_dir", &c.demo.out_dir);
+    d.Finish();
+  }
+  top.Finish();
+  Validate(c);
+  return c;
+}
+
+Config LoadConfig(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw core::ConfigError(path, "<file>", "", "cannot open the config file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ParseConfig(ss.str(), path);
+}
+
+}  // namespace toponav::experiments

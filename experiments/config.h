@@ -1,0 +1,43 @@
+#pragma once
+// Run configuration: every run is described by a YAML file under configs/.  Loading is strict (unknown keys,
+// wrong types and out-of-range values are core::ConfigError naming the file, the key path and the value) and
+// happens only here, at the edge; the rest of the program sees plain option structs.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/world.h"
+#include "sim/motion.h"
+#include "sim/worlds.h"
+
+namespace toponav::experiments {
+
+// The default job of scripts/run.sh (until the search benchmark exists): one world of each kind.
+struct DemoJob {
+  std::vector<core::WorldKind> kinds{core::WorldKind::kLabyrinth, core::WorldKind::kOfficePark,
+                                     core::WorldKind::kGuidedMaze};
+  uint64_t seed = 10000;
+  std::string out_dir = "results/worlds";
+};
+
+struct PictureOptions {
+  double pixels_per_unit = 3.0;  // scale of top-down pictures
+  int max_pixels = 2400;         // the longer image side is capped at this
+};
+
+struct Config {
+  std::string source = "<defaults>";  // the file it was loaded from
+  sim::WorldOptions worlds;
+  sim::MotionOptions motion;
+  PictureOptions picture;
+  DemoJob demo;
+};
+
+// Loads and validates 'path'.  Every section and key is optional (defaults above); unknown keys are errors.
+Config LoadConfig(const std::string& path);
+// Parses YAML text as if it came from 'source' (used by tests).
+Config ParseConfig(const std::string& yaml_text, const std::string& source);
+// Validates cross-field rules of a config built in code; throws core::ConfigError naming config.source.
+void Validate(const Config& config);
+
+}  // namespace toponav::experiments

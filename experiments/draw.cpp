@@ -1,0 +1,140 @@
+#include "experiments/draw.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.h"
+
+namespace toponav::experiments {
+
+using core::Vec2;
+
+namespace {
+
+// World -> pixel mapping with a margin; colours are BGR.
+class Canvas {
+ public:
+  Canvas(const core::World& world, const PictureOptions& o) {
+    const core::Aabb2& b = world.bounds;
+    scale_ = o.pixels_per_unit;
+    const double longest = std::max(b.width(), b.height()) + 2 * kMargin;
+    if (longest * scale_ > o.max_pixels) scale_ = o.max_pixels / longest;
+    origin_ = {b.min.x - kMargin, b.max.y + kMargin};
+    image = cv::Mat(int(std::ceil((b.height() + 2 * kMargin) * scale_)), int(std::ceil((b.width() + 2 * kMargin) * scale_)),
+                    CV_8UC3, cv::Scalar(70, 70, 70));
+  }
+  cv::Point Px(const Vec2& p) const {
+    return {int(std::lround((p.x - origin_.x) * scale_)), int(std::lround((origin_.y - p.y) * scale_))};
+  }
+  std::vector<cv::Point> Px(const core::Ring& r) const {
+    std::vector<cv::Point> pts;
+    for (const auto& p : r) pts.push_back(Px(p));
+    return pts;
+  }
+  int Len(double units) const { return std::max(1, int(std::lround(units * scale_))); }
+  void Fill(const core::Ring& r, const cv::Scalar& c) {
+    std::vector<std::vector<cv::Point>> polys{Px(r)};
+    cv::fillPoly(image, polys, c, cv::LINE_AA);
+  }
+  void Outline(const core::Ring& r, const cv::Scalar& c, int thickness) {
+    std::vector<std::vector<cv::Point>> polys{Px(r)};
+    cv::polylines(image, polys, true, c, thickness, cv::LINE_AA);
+  }
+  void Save(const std::string& path) const {
+    bool ok = false;
+    try {
+      ok = cv::imwrite(path, image);
+    } catch (const cv::Exception& e) {
+      throw core::DataError(path, std::string("cannot write the picture: ") + e.what());
+    }
+    if (!ok) throw core::DataError(path, "cannot write the picture");
+  }
+  cv::Mat image;
+
+ private:
+  static constexpr double kMargin = 8.0;
+  double scale_ = 1.0;
+  Vec2 origin_;
+};
+
+const cv::Scalar kFree(250, 250, 250), kWall(20, 20, 20), kObstacle(150, 150, 150), kGuide(60, 190, 60);
+const cv::Scalar kBox(40, 90, 160), kCylinder(190, 120, 40), kTree(40, 140, 40), kStart(220, 90, 20),
+    kGoal(40, 40, 220), kRegion(235, 245, 235);
+
+void DrawWorld(Canvas& c, const core::World& w) {
+  if (w.has_boundary()) {
+    c.Fill(w.boundary, kFree);
+  } else {
+    const auto& b = w.bounds;
+    c.Fill({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, kRegion);
+    c.Outline({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, cv::Scalar(150, 170, 150), 1);
+  }
+  if (w.guide_path.size() > 1) {
+    std::vector<cv::Point> pts;
+    for (const auto& p : w.guide_path) pts.push_back(c.Px(p));
+    cv::polylines(c.image, std::vector<std::vector<cv::Point>>{pts}, false, kGuide, c.Len(w.guide_path_width),
+                  cv::LINE_AA);
+  }
+  for (const auto& o : w.obstacles) c.Fill(o, kObstacle);
+  for (const auto& o : w.obstacles) c.Outline(o, kWall, 2);
+  if (w.has_boundary()) c.Outline(w.boundary, kWall, 2);
+  for (const auto& cl : w.clutter) {
+    if (cl.shape == core::ClutterShape::kBox) {
+      core::Ring r;
+      for (const Vec2 k : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}})
+        r.push_back(cl.center + core::Rotate(k * cl.size, cl.yaw));
+      c.Fill(r, kBox);
+    } else if (cl.shape == core::ClutterShape::kTree) {
+      cv::circle(c.image, c.Px(cl.center), c.Len(cl.size * 3), cv::Scalar(120, 200, 120), cv::FILLED, cv::LINE_AA);
+      cv::circle(c.image, c.Px(cl.center), c.Len(cl.size), kTree, cv::FILLED, cv::LINE_AA);
+    } else {
+      cv::circle(c.image, c.Px(cl.center), c.Len(cl.size), kCylinder, cv::FILLED, cv::LINE_AA);
+    }
+  }
+}
+
+void DrawAgent(Canvas& c, const core::Pose2& pose, const cv::Scalar& color) {
+  const Vec2 p = pose.position();
+  const double r = 3.0;
+  const core::Ring tri{p + core::Rotate({2 * r, 0}, pose.yaw), p + core::Rotate({-r, r}, pose.yaw),
+                       p + core::Rotate({-r, -r}, pose.yaw)};
+  c.Fill(tri, color);
+}
+
+}  // namespace
+
+void DrawWorldPicture(const core::World& world, const PictureOptions& options, const std::string& png_path) {
+  Canvas c(world, options);
+  DrawWorld(c, world);
+  DrawAgent(c, world.start, kStart);
+  cv::circle(c.image, c.Px(world.goal), c.Len(3.0), kGoal, cv::FILLED, cv::LINE_AA);
+  cv::circle(c.image, c.Px(world.goal), c.Len(3.0), kWall, 1, cv::LINE_AA);
+  c.Save(png_path);
+}
+
+void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
+                            const std::vector<sim::VisibleVertex>& visible, const core::Ring& visibility_polygon,
+                            const PictureOptions& options, const std::string& png_path) {
+  Canvas c(world, options);
+  DrawWorld(c, world);
+  if (visibility_polygon.size() >= 3) {
+    cv::Mat overlay = c.image.clone();
+    std::vector<std::vector<cv::Point>> polys{c.Px(visibility_polygon)};
+    cv::fillPoly(overlay, polys, cv::Scalar(120, 230, 250), cv::LINE_AA);
+    cv::addWeighted(overlay, 0.5, c.image, 0.5, 0, c.image);
+    c.Outline(visibility_polygon, cv::Scalar(0, 160, 220), 1);
+  }
+  for (const auto& v : visible) {
+    static const cv::Scalar colours[4] = {cv::Scalar(0, 140, 255), cv::Scalar(0, 0, 0), cv::Scalar(180, 40, 150),
+                                          cv::Scalar(140, 140, 140)};
+    const cv::Scalar col = colours[static_cast<int>(v.label)];
+    cv::line(c.image, c.Px(pose.position()), c.Px(v.position), col, 1, cv::LINE_AA);
+    cv::circle(c.image, c.Px(v.position), c.Len(1.5) + 2, col, cv::FILLED, cv::LINE_AA);
+  }
+  DrawAgent(c, pose, kStart);
+  c.Save(png_path);
+}
+
+}  // namespace toponav::experiments

@@ -1,0 +1,22 @@
+#pragma once
+// Top-down pictures (PNG).  North is up; one world unit is PictureOptions::pixels_per_unit pixels.
+#include <string>
+#include <vector>
+
+#include "core/world.h"
+#include "experiments/config.h"
+#include "sim/raycast.h"
+
+namespace toponav::experiments {
+
+// Walls, obstacles, clutter (boxes brown, cylinders blue, trees green), the guiding path, start (blue arrow)
+// and goal (red).  Throws core::DataError if the file cannot be written.
+void DrawWorldPicture(const core::World& world, const PictureOptions& options, const std::string& png_path);
+
+// The world, the visibility polygon shaded, and a ray to each visible vertex coloured by its label
+// (corner black, right gap orange, left gap purple, point grey).
+void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
+                            const std::vector<sim::VisibleVertex>& visible, const core::Ring& visibility_polygon,
+                            const PictureOptions& options, const std::string& png_path);
+
+}  // namespace toponav::experiments

@@ -1,0 +1,5 @@
+#pragma once
+// Front door of the experiments layer: configuration, pictures and world checks used by the CLI.
+#include "experiments/config.h"
+#include "experiments/draw.h"
+#include "experiments/world_checks.h"

@@ -1,0 +1,268 @@
+// toponav: the command-line front end.  Subcommands: world, observe, demo, info.
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "core/error.h"
+#include "experiments/experiments.h"
+#include "learning/learning.h"
+#include "mapping/polygon_set.h"
+#include "sim/sim.h"
+
+namespace fs = std::filesystem;
+using namespace toponav;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double MsSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// "x,y,yaw" -> pose
+core::Pose2 ParsePose(const std::string& text) {
+  core::Pose2 p;
+  char c1 = 0, c2 = 0;
+  std::istringstream is(text);
+  if (!(is >> p.x >> c1 >> p.y >> c2 >> p.yaw) || c1 != ',' || c2 != ',' || !is.eof())
+    throw core::ConfigError("<command line>", "--pose", text, "expected x,y,yaw (numbers, yaw in radians)");
+  return p;
+}
+
+// "N" or "A-B" (inclusive) -> seeds
+std::vector<uint64_t> ParseSeeds(const std::string& text) {
+  std::vector<uint64_t> seeds;
+  const auto dash = text.find('-');
+  try {
+    size_t used = 0;
+    if (dash == std::string::npos) {
+      seeds.push_back(std::stoull(text, &used));
+      if (used != text.size()) throw std::invalid_argument(text);
+    } else {
+      const uint64_t a = std::stoull(text.substr(0, dash), &used);
+      const uint64_t b = std::stoull(text.substr(dash + 1));
+      if (b < a || b - a > 1000000) throw std::invalid_argument(text);
+      for (uint64_t s = a; s <= b; ++s) seeds.push_back(s);
+    }
+  } catch (const std::exception&) {
+    throw core::ConfigError("<command line>", "--seeds", text, "expected N or A-B with A <= B");
+  }
+  return seeds;
+}
+
+core::WorldKind ParseKind(const std::string& text) {
+  auto k = core::ParseWorldKind(text);
+  if (!k || *k == core::WorldKind::kCustom)
+    throw core::ConfigError("<command line>", "--kind", text, "expected labyrinth, office_park or guided_maze");
+  return *k;
+}
+
+experiments::Config LoadOrDefault(const std::string& path) {
+  return path.empty() ? experiments::Config{} : experiments::LoadConfig(path);
+}
+
+void EnsureDir(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw core::DataError(dir, "cannot create the directory: " + ec.message());
+}
+
+nlohmann::json ObservationJson(const core::Pose2& pose, const std::vector<sim::VisibleVertex>& visible,
+                               const core::Ring& poly) {
+  nlohmann::json j;
+  j["pose"] = {{"x", pose.x}, {"y", pose.y}, {"yaw", pose.yaw}};
+  j["visible_vertices"] = nlohmann::json::array();
+  for (const auto& v : visible)
+    j["visible_vertices"].push_back({{"ring", v.ref.ring},
+                                     {"index", v.ref.index},
+                                     {"x", v.position.x},
+                                     {"y", v.position.y},
+                                     {"range", v.range},
+                                     {"bearing", v.bearing},
+                                     {"label", core::ToString(v.label)}});
+  j["visibility_polygon"] = nlohmann::json::array();
+  for (const auto& p : poly) j["visibility_polygon"].push_back({p.x, p.y});
+  return j;
+}
+
+// ---------------------------------------------------------------- world
+
+struct WorldArgs {
+  std::string kind, seeds = "0", out = "results/world", config, world_file;
+  bool no_png = false, check = false;
+};
+
+int RunWorld(const WorldArgs& a) {
+  const experiments::Config cfg = LoadOrDefault(a.config);
+  EnsureDir(a.out);
+  if (!a.world_file.empty()) {
+    const core::World w = sim::LoadWorld(a.world_file);
+    const std::string png = (fs::path(a.out) / "world.png").string();
+    experiments::DrawWorldPicture(w, cfg.picture, png);
+    fmt::print("read {} ({} vertices, {} clutter items)\nwrote {}\n", a.world_file, core::MapVertices(w).size(),
+               w.clutter.size(), png);
+    return 0;
+  }
+  if (a.kind.empty()) throw core::ConfigError("<command line>", "--kind", "", "give --kind or --world");
+  const core::WorldKind kind = ParseKind(a.kind);
+  const std::vector<uint64_t> seeds = ParseSeeds(a.seeds);
+  int failures = 0;
+  double total_ms = 0;
+  for (uint64_t seed : seeds) {
+    const auto t0 = Clock::now();
+    const core::World w = sim::GenerateWorld(kind, cfg.worlds, seed);
+    const double ms = MsSince(t0);
+    total_ms += ms;
+    const std::string stem = seeds.size() == 1 ? "world" : fmt::format("{}_s{}", a.kind, seed);
+    const std::string json_path = (fs::path(a.out) / (stem + ".json")).string();
+    sim::SaveWorld(w, json_path);
+    std::string line = fmt::format("{} seed {}: {} vertices, {} obstacles, {} clutter, generated in {:.1f} ms -> {}",
+                                   a.kind, seed, core::MapVertices(w).size(), w.obstacles.size(), w.clutter.size(),
+                                   ms, json_path);
+    if (!a.no_png) {
+      const std::string png = (fs::path(a.out) / (stem + ".png")).string();
+      experiments::DrawWorldPicture(w, cfg.picture, png);
+      line += ", " + png;
+    }
+    if (a.check) {
+      const auto problems = experiments::CheckWorld(w, cfg.worlds);
+      for (const auto& p : problems) line += "\n  PROBLEM: " + p;
+      failures += problems.empty() ? 0 : 1;
+    }
+    fmt::print("{}\n", line);
+  }
+  if (seeds.size() > 1)
+    fmt::print("{} worlds, mean generation time {:.1f} ms{}\n", seeds.size(), total_ms / double(seeds.size()),
+               a.check ? fmt::format(", {} with problems", failures) : "");
+  return failures == 0 ? 0 : 3;
+}
+
+// ---------------------------------------------------------------- observe
+
+struct ObserveArgs {
+  std::string world_file, kind, config, pose, png;
+  uint64_t seed = 0;
+  double max_range = 0;
+};
+
+int RunObserve(const ObserveArgs& a) {
+  const experiments::Config cfg = LoadOrDefault(a.config);
+  core::World w;
+  if (!a.world_file.empty()) w = sim::LoadWorld(a.world_file);
+  else if (!a.kind.empty()) w = sim::GenerateWorld(ParseKind(a.kind), cfg.worlds, a.seed);
+  else throw core::ConfigError("<command line>", "--world", "", "give --world FILE or --kind K --seed N");
+  const core::Pose2 pose = a.pose.empty() ? w.start : ParsePose(a.pose);
+  const sim::RayCaster caster(w);
+  const double range = a.max_range > 0 ? a.max_range : std::numeric_limits<double>::infinity();
+  const auto visible = caster.VisibleVertices(pose, range);
+  const core::Ring poly = caster.VisibilityPolygon(pose.position());
+  std::cout << ObservationJson(pose, visible, poly).dump(1) << "\n";
+  if (!a.png.empty()) {
+    experiments::DrawObservationPicture(w, pose, visible, poly, cfg.picture, a.png);
+    std::cerr << "wrote " << a.png << "\n";
+  }
+  return 0;
+}
+
+// ---------------------------------------------------------------- demo
+
+int RunDemo(const std::string& config_path, const std::string& out_override) {
+  const experiments::Config cfg = LoadOrDefault(config_path);
+  const std::string out = out_override.empty() ? cfg.demo.out_dir : out_override;
+  fmt::print("toponav demo: one world of each kind, seed {} (config {})\n", cfg.demo.seed, cfg.source);
+  for (const core::WorldKind kind : cfg.demo.kinds) {
+    const std::string dir = (fs::path(out) / core::ToString(kind)).string();
+    EnsureDir(dir);
+    const auto t0 = Clock::now();
+    const core::World w = sim::GenerateWorld(kind, cfg.worlds, cfg.demo.seed);
+    const double gen_ms = MsSince(t0);
+    sim::SaveWorld(w, dir + "/world.json");
+    experiments::DrawWorldPicture(w, cfg.picture, dir + "/world.png");
+    const sim::RayCaster caster(w);
+    const auto visible = caster.VisibleVertices(w.start);
+    const auto poly = caster.VisibilityPolygon(w.start.position());
+    experiments::DrawObservationPicture(w, w.start, visible, poly, cfg.picture, dir + "/observation.png");
+    const auto problems = experiments::CheckWorld(w, cfg.worlds);
+    fmt::print("  {:<12} {:>4} vertices {:>3} clutter  generated in {:6.1f} ms  {} visible from start  {}\n",
+               core::ToString(kind), core::MapVertices(w).size(), w.clutter.size(), gen_ms, visible.size(),
+               problems.empty() ? "ok" : "PROBLEMS: " + problems.front());
+    fmt::print("  {:<12} {}/world.json  {}/world.png  {}/observation.png\n", "", dir, dir, dir);
+  }
+  return 0;
+}
+
+// ---------------------------------------------------------------- info
+
+int RunInfo(bool prefer_cuda) {
+  fmt::print("toponav {}\n", "0.1.0");
+  fmt::print("  ray casting : {}\n", sim::RayCasterLibraryInfo());
+  fmt::print("  motion      : {}\n", sim::MotionLibraryInfo());
+  fmt::print("  polygons    : {}\n", mapping::PolygonLibraryInfo());
+  fmt::print("  off-screen GL: {}\n", sim::OffscreenGlInfo());
+  const auto b = learning::SelectBackend(prefer_cuda);
+  fmt::print("  LibTorch    : {} on {} ({} threads, CUDA {})\n", b.torch_version, b.device, b.num_threads,
+             b.cuda_available ? "available" : "not available");
+  fmt::print("  torch check : 3x3 conv of a 4x5 image sums to {}\n", learning::ConvolutionCheck(4, 5));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"toponav: topological planning with monocular vision - simulator and experiment harness"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Print help for every subcommand");
+
+  WorldArgs wa;
+  auto* world = app.add_subcommand("world", "Generate procedural worlds: writes world.json and a top-down world.png");
+  world->add_option("--kind", wa.kind, "World kind: labyrinth, office_park or guided_maze");
+  world->add_option("--seed,--seeds", wa.seeds, "Seed N, or an inclusive range A-B (files then named KIND_sSEED)")
+      ->capture_default_str();
+  world->add_option("--out", wa.out, "Output directory")->capture_default_str();
+  world->add_option("--config", wa.config, "YAML config with generator options (e.g. configs/demo.yaml)");
+  world->add_option("--world", wa.world_file, "Instead of generating, read this world.json and draw it");
+  world->add_flag("--no-png", wa.no_png, "Skip the pictures (faster for many seeds)");
+  world->add_flag("--check", wa.check, "Check every world (one connected free space, building gaps, guide path); exit 3 on problems");
+
+  ObserveArgs oa;
+  auto* observe = app.add_subcommand("observe", "Print the ground-truth observation from a pose as JSON");
+  observe->add_option("--world", oa.world_file, "World file (world.json)");
+  observe->add_option("--kind", oa.kind, "Or generate a world of this kind ...");
+  observe->add_option("--seed", oa.seed, "... from this seed")->capture_default_str();
+  observe->add_option("--config", oa.config, "YAML config with generator options");
+  observe->add_option("--pose", oa.pose, "Agent pose x,y,yaw (world units, radians); default: the world's start");
+  observe->add_option("--max-range", oa.max_range, "Only vertices closer than this (default: unlimited)");
+  observe->add_option("--png", oa.png, "Also draw the observation to this PNG");
+
+  std::string demo_config = "configs/demo.yaml", demo_out;
+  auto* demo = app.add_subcommand("demo", "The default job: one world of each kind, pictures and JSON under results/");
+  demo->add_option("--config", demo_config, "Job config")->capture_default_str();
+  demo->add_option("--out", demo_out, "Output directory (default: demo.out_dir of the config)");
+
+  bool prefer_cuda = false;
+  auto* info = app.add_subcommand("info", "Print the versions of the libraries and check that each one works");
+  info->add_flag("--cuda", prefer_cuda, "Ask for the CUDA backend (falls back to the CPU with a warning)");
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*world) return RunWorld(wa);
+    if (*observe) return RunObserve(oa);
+    if (*demo) return RunDemo(demo_config, demo_out);
+    if (*info) return RunInfo(prefer_cuda);
+  } catch (const core::ConfigError& e) {
+    std::cerr << "config error: " << e.what() << "\n";
+    return 2;
+  } catch (const core::DataError& e) {
+    std::cerr << "data error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,115 @@
+// The only translation unit that includes CGAL (it costs ~85 s to compile: keep it that way).
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_set_2.h>
+#include <CGAL/version.h>
+
+#include "core/error.h"
+#include "mapping/polygon_set.h"
+
+namespace toponav::mapping {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using CPoint = Kernel::Point_2;
+using CPolygon = CGAL::Polygon_2<Kernel>;
+using CPolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+using CPolygonSet = CGAL::Polygon_set_2<Kernel>;
+
+struct PolygonSet::Impl {
+  CPolygonSet set;
+};
+
+namespace {
+CPolygon ToCgal(const core::Ring& ring, bool want_ccw) {
+  if (ring.size() < 3) throw core::DataError("<polygon>", "a polygon needs at least 3 points");
+  CPolygon p;
+  for (const auto& v : ring) p.push_back(CPoint(v.x, v.y));
+  if (!p.is_simple()) throw core::DataError("<polygon>", "polygon is not simple (self-intersecting)");
+  if ((p.orientation() == CGAL::COUNTERCLOCKWISE) != want_ccw) p.reverse_orientation();
+  return p;
+}
+core::Ring ToRing(const CPolygon& p) {
+  core::Ring r;
+  for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it)
+    r.push_back({CGAL::to_double(it->x()), CGAL::to_double(it->y())});
+  return r;
+}
+}  // namespace
+
+PolygonSet::PolygonSet() : impl_(std::make_unique<Impl>()) {}
+PolygonSet::~PolygonSet() = default;
+PolygonSet::PolygonSet(const PolygonSet& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
+PolygonSet& PolygonSet::operator=(const PolygonSet& o) {
+  if (this != &o) *impl_ = *o.impl_;
+  return *this;
+}
+PolygonSet::PolygonSet(PolygonSet&&) noexcept = default;
+PolygonSet& PolygonSet::operator=(PolygonSet&&) noexcept = default;
+
+PolygonSet PolygonSet::FromRing(const core::Ring& ring) {
+  PolygonSet s;
+  s.impl_->set.insert(ToCgal(ring, true));
+  return s;
+}
+
+PolygonSet PolygonSet::FromPolygon(const core::Polygon& polygon) {
+  CPolygonWithHoles pwh(ToCgal(polygon.outer, true));
+  for (const auto& h : polygon.holes) pwh.add_hole(ToCgal(h, false));
+  PolygonSet s;
+  s.impl_->set.insert(pwh);
+  return s;
+}
+
+void PolygonSet::Join(const PolygonSet& o) { impl_->set.join(o.impl_->set); }
+void PolygonSet::Intersect(const PolygonSet& o) { impl_->set.intersection(o.impl_->set); }
+void PolygonSet::Difference(const PolygonSet& o) { impl_->set.difference(o.impl_->set); }
+
+PolygonSet PolygonSet::JoinAll(const std::vector<PolygonSet>& sets) {
+  std::vector<CPolygonWithHoles> all;
+  for (const auto& s : sets) s.impl_->set.polygons_with_holes(std::back_inserter(all));
+  PolygonSet out;
+  if (!all.empty()) out.impl_->set.join(all.begin(), all.end());
+  return out;
+}
+
+bool PolygonSet::empty() const { return impl_->set.is_empty(); }
+
+double PolygonSet::Area() const {
+  std::vector<CPolygonWithHoles> pwhs;
+  impl_->set.polygons_with_holes(std::back_inserter(pwhs));
+  double a = 0;
+  for (const auto& p : pwhs) {
+    a += CGAL::to_double(p.outer_boundary().area());
+    for (auto h = p.holes_begin(); h != p.holes_end(); ++h) a += CGAL::to_double(h->area());  // clockwise: negative
+  }
+  return a;
+}
+
+std::vector<core::Polygon> PolygonSet::Polygons() const {
+  std::vector<CPolygonWithHoles> pwhs;
+  impl_->set.polygons_with_holes(std::back_inserter(pwhs));
+  std::vector<core::Polygon> out;
+  for (const auto& p : pwhs) {
+    core::Polygon poly;
+    poly.outer = ToRing(p.outer_boundary());
+    for (auto h = p.holes_begin(); h != p.holes_end(); ++h) poly.holes.push_back(ToRing(*h));
+    out.push_back(std::move(poly));
+  }
+  return out;
+}
+
+bool PolygonSet::Contains(const core::Vec2& p) const {
+  return impl_->set.oriented_side(CPoint(p.x, p.y)) != CGAL::ON_NEGATIVE_SIDE;
+}
+
+double IoU(const PolygonSet& a, const PolygonSet& b) {
+  PolygonSet i = a, u = a;
+  i.Intersect(b);
+  u.Join(b);
+  const double ua = u.Area();
+  return ua > 0 ? i.Area() / ua : 0.0;
+}
+
+std::string PolygonLibraryInfo() { return "CGAL " CGAL_STRINGIZE(CGAL_VERSION); }
+
+}  // namespace toponav::mapping

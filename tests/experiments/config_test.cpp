@@ -1,0 +1,88 @@
+#include "experiments/config.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace toponav::experiments {
+namespace {
+
+core::ConfigError ErrorOf(const std::string& yaml) {
+  try {
+    ParseConfig(yaml, "configs/bad.yaml");
+  } catch (const core::ConfigError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no ConfigError for:\n" << yaml;
+  return core::ConfigError("", "", "", "");
+}
+
+TEST(Config, EmptyFileGivesDefaults) {
+  const Config c = ParseConfig("", "empty.yaml");
+  EXPECT_EQ(c.worlds.labyrinth.num_rooms, 4);
+  EXPECT_DOUBLE_EQ(c.motion.step_length, 1.8);
+  EXPECT_EQ(c.demo.kinds.size(), 3u);
+}
+
+TEST(Config, ValuesAreRead) {
+  const Config c = ParseConfig("worlds:\n  labyrinth:\n    num_rooms: 5\nmotion:\n  step_length: 2.5\n"
+                               "demo:\n  kinds: [guided_maze]\n  seed: 12345\n",
+                               "x.yaml");
+  EXPECT_EQ(c.worlds.labyrinth.num_rooms, 5);
+  EXPECT_DOUBLE_EQ(c.motion.step_length, 2.5);
+  ASSERT_EQ(c.demo.kinds.size(), 1u);
+  EXPECT_EQ(c.demo.kinds[0], core::WorldKind::kGuidedMaze);
+  EXPECT_EQ(c.demo.seed, 12345u);
+}
+
+TEST(Config, UnknownKeyNamesFileAndKeyPath) {
+  const auto e = ErrorOf("worlds:\n  labyrinth:\n    num_romos: 5\n");
+  EXPECT_EQ(e.file(), "configs/bad.yaml");
+  EXPECT_EQ(e.key(), "worlds.labyrinth.num_romos");
+  EXPECT_NE(std::string(e.what()).find("unknown key"), std::string::npos);
+}
+
+TEST(Config, UnknownTopLevelSectionIsAnError) {
+  EXPECT_EQ(ErrorOf("mapper:\n  x: 1\n").key(), "mapper");
+}
+
+TEST(Config, WrongTypeNamesKeyAndValue) {
+  const auto e = ErrorOf("motion:\n  step_length: fast\n");
+  EXPECT_EQ(e.key(), "motion.step_length");
+  EXPECT_EQ(e.value(), "fast");
+  EXPECT_NE(std::string(e.what()).find("expected a number"), std::string::npos);
+  EXPECT_EQ(ErrorOf("worlds:\n  labyrinth:\n    num_rooms: 4.5\n").key(), "worlds.labyrinth.num_rooms");
+  EXPECT_EQ(ErrorOf("demo:\n  seed: -3\n").key(), "demo.seed");
+  EXPECT_EQ(ErrorOf("demo:\n  kinds: labyrinth\n").key(), "demo.kinds");
+  EXPECT_EQ(ErrorOf("worlds: [1, 2]\n").key(), "worlds");
+}
+
+TEST(Config, OutOfRangeNamesKeyValueAndRange) {
+  const auto e = ErrorOf("worlds:\n  guided_maze:\n    cells_x: 500\n");
+  EXPECT_EQ(e.key(), "worlds.guided_maze.cells_x");
+  EXPECT_EQ(e.value(), "500");
+  EXPECT_NE(std::string(e.what()).find("[2, 50]"), std::string::npos);
+}
+
+TEST(Config, CrossFieldRulesNameTheFile) {
+  const auto e = ErrorOf("worlds:\n  office_park:\n    min_building_gap: 50\n    max_building_gap: 40\n");
+  EXPECT_EQ(e.file(), "configs/bad.yaml");
+  EXPECT_EQ(e.key(), "worlds.office_park.min_building_gap");
+}
+
+TEST(Config, UnknownWorldKindIsNamed) {
+  const auto e = ErrorOf("demo:\n  kinds: [labyrinth, castle]\n");
+  EXPECT_EQ(e.key(), "demo.kinds");
+  EXPECT_EQ(e.value(), "castle");
+}
+
+TEST(Config, MissingFileIsAConfigError) {
+  EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), core::ConfigError);
+}
+
+TEST(Config, InvalidYamlIsAConfigError) {
+  EXPECT_THROW(ParseConfig("worlds: [unclosed\n", "broken.yaml"), core::ConfigError);
+}
+
+}  // namespace
+}  // namespace toponav::experiments

@@ -1,0 +1,64 @@
+#include "mapping/polygon_set.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "sim/worlds.h"
+#include "tests/testing/worlds.h"
+
+namespace toponav::mapping {
+namespace {
+
+TEST(PolygonSet, UnionOfOverlappingSquaresHasExactArea) {
+  PolygonSet a = PolygonSet::FromRing(testing::Rect(0, 0, 2, 2));
+  a.Join(PolygonSet::FromRing(testing::Rect(1, 1, 3, 3)));
+  EXPECT_DOUBLE_EQ(a.Area(), 7.0);
+  EXPECT_EQ(a.Polygons().size(), 1u);
+}
+
+TEST(PolygonSet, DifferenceMakesAHole) {
+  PolygonSet a = PolygonSet::FromRing(testing::Rect(0, 0, 10, 10));
+  a.Difference(PolygonSet::FromRing(testing::Rect(4, 4, 6, 6)));
+  EXPECT_DOUBLE_EQ(a.Area(), 96.0);
+  const auto polys = a.Polygons();
+  ASSERT_EQ(polys.size(), 1u);
+  EXPECT_EQ(polys[0].holes.size(), 1u);
+  EXPECT_FALSE(a.Contains({5, 5}));
+  EXPECT_TRUE(a.Contains({1, 1}));
+}
+
+TEST(PolygonSet, JoinAllMatchesSequentialJoins) {
+  std::vector<PolygonSet> sets;
+  PolygonSet seq;
+  for (int i = 0; i < 20; ++i) {
+    sets.push_back(PolygonSet::FromRing(testing::Rect(i * 0.7, (i % 3) * 0.5, i * 0.7 + 1, (i % 3) * 0.5 + 1)));
+    seq.Join(sets.back());
+  }
+  EXPECT_NEAR(PolygonSet::JoinAll(sets).Area(), seq.Area(), 1e-9);
+}
+
+TEST(PolygonSet, IoUOfIdenticalAndDisjointRegions) {
+  const PolygonSet a = PolygonSet::FromRing(testing::Rect(0, 0, 1, 1));
+  const PolygonSet b = PolygonSet::FromRing(testing::Rect(5, 5, 6, 6));
+  EXPECT_DOUBLE_EQ(IoU(a, a), 1.0);
+  EXPECT_DOUBLE_EQ(IoU(a, b), 0.0);
+  EXPECT_DOUBLE_EQ(IoU(a, PolygonSet::FromRing(testing::Rect(0, 0, 1, 2))), 0.5);
+}
+
+TEST(PolygonSet, SelfIntersectingInputIsADataError) {
+  EXPECT_THROW(PolygonSet::FromRing({{0, 0}, {2, 2}, {2, 0}, {0, 2}}), core::DataError);
+}
+
+// Acceptance: every labyrinth and maze has one connected free space (checked with exact Booleans).
+TEST(GeneratedWorlds, LabyrinthAndMazeFreeSpaceIsOneConnectedPiece) {
+  for (auto kind : {core::WorldKind::kLabyrinth, core::WorldKind::kGuidedMaze})
+    for (uint64_t seed = 0; seed < 30; ++seed) {
+      const core::World w = sim::GenerateWorld(kind, {}, seed);
+      const PolygonSet free = PolygonSet::FromPolygon(core::FreeSpacePolygon(w));
+      EXPECT_EQ(free.Polygons().size(), 1u) << core::ToString(kind) << " seed " << seed;
+      EXPECT_NEAR(free.Area(), core::Area(core::FreeSpacePolygon(w)), 1e-6);
+    }
+}
+
+}  // namespace
+}  // namespace toponav::mapping
