@@ -362,8 +362,20 @@ World GenerateOfficePark(const OfficeParkOptions& o, uint64_t seed) {
     placed = true;
   }
   TOPONAV_CHECK(placed, "office park: no start pose");
-  // The office park is a search world: its goal is the far corner of the region from the start.
-  w.goal = {w.start.x > 0 ? w.bounds.min.x : w.bounds.max.x, w.start.y > 0 ? w.bounds.min.y : w.bounds.max.y};
+  // The goal: the farthest from the start of 50 free samples that keep the start's clearance from
+  // buildings, trees and the region's edge.
+  double best = -1;
+  for (int i = 0, tries = 0; i < 50 && tries < 200000; ++tries) {
+    const double m = o.start_min_gap;
+    const Vec2 p{rng.Uniform(w.bounds.min.x + m, w.bounds.max.x - m), rng.Uniform(w.bounds.min.y + m, w.bounds.max.y - m)};
+    if (!core::IsFree(w, p) || core::SignedDistance(w, p) < m) continue;
+    ++i;
+    if (core::Distance(p, w.start.position()) > best) {
+      best = core::Distance(p, w.start.position());
+      w.goal = p;
+    }
+  }
+  TOPONAV_CHECK(best >= 0, "office park: no goal");
   return w;
 }
 

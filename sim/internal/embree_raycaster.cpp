@@ -274,8 +274,14 @@ Ring RayCaster::VisibilityPolygon(const Vec2& p) const {
       return;
     }
     // Tangent vertex: the ray grazes v and continues to a farther wall.
-    const Impl::Hit h = m.Intersect(p, dir, dist * (1 + 1e-7) + 1e-7, std::numeric_limits<double>::infinity(),
-                                    kMaskWalls | kMaskFar);
+    // Hits on v's own walls are rounding noise at v: step over them.
+    double tnear = dist * (1 + 1e-7) + 1e-7;
+    Impl::Hit h;
+    for (int guard = 0; guard < 16; ++guard) {
+      h = m.Intersect(p, dir, tnear, std::numeric_limits<double>::infinity(), kMaskWalls | kMaskFar);
+      if (!h.valid() || !m.IncidentToVertex(h, ref)) break;
+      tnear = h.t * (1 + 1e-6) + 1e-6;
+    }
     if (!h.valid()) {
       entries.push_back({angle, 1, v});
       return;

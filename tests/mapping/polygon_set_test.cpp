@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "sim/raycast.h"
 #include "sim/worlds.h"
+
+#include <cmath>
 #include "tests/testing/worlds.h"
 
 namespace toponav::mapping {
@@ -57,6 +60,38 @@ TEST(GeneratedWorlds, LabyrinthAndMazeFreeSpaceIsOneConnectedPiece) {
       const PolygonSet free = PolygonSet::FromPolygon(core::FreeSpacePolygon(w));
       EXPECT_EQ(free.Polygons().size(), 1u) << core::ToString(kind) << " seed " << seed;
       EXPECT_NEAR(free.Area(), core::Area(core::FreeSpacePolygon(w)), 1e-6);
+    }
+}
+
+}  // namespace
+}  // namespace toponav::mapping
+
+namespace toponav::mapping {
+namespace {
+
+// The exact visibility polygon lies inside true free space and matches a dense ray fan.
+TEST(GeneratedWorlds, VisibilityPolygonIsFreeSpaceAndMatchesDenseRayFan) {
+  for (auto kind : {core::WorldKind::kLabyrinth, core::WorldKind::kGuidedMaze, core::WorldKind::kOfficePark})
+    for (uint64_t seed = 0; seed < 5; ++seed) {
+      const core::World w = sim::GenerateWorld(kind, {}, seed);
+      const sim::RayCaster rc(w);
+      const core::Ring vis = rc.VisibilityPolygon(w.start.position());
+      ASSERT_GE(vis.size(), 3u);
+      PolygonSet outside = PolygonSet::FromRing(vis);
+      outside.Difference(PolygonSet::FromPolygon(core::FreeSpacePolygon(w)));
+      const double area = core::SignedArea(vis);
+      if (!w.has_boundary()) continue;  // open worlds: the polygon is closed by the far box, not by walls
+      EXPECT_LT(outside.Area(), 1e-6 * area) << core::ToString(kind) << " seed " << seed;
+      // Dense fan of 20000 rays (walls only): its polygon area converges to the exact one from below-ish.
+      const int n = 20000;
+      const double range = 1e4;
+      const auto depth = rc.DepthScan({w.start.x, w.start.y, 0.0}, n, range, false);
+      core::Ring fan;
+      for (int j = 0; j < n; ++j) {
+        const double a = core::ColumnToBearing(j, n);
+        fan.push_back(w.start.position() + core::Vec2{std::cos(a), std::sin(a)} * depth[size_t(j)]);
+      }
+      EXPECT_NEAR(core::SignedArea(fan) / area, 1.0, 0.01) << core::ToString(kind) << " seed " << seed;
     }
 }
 
