@@ -69,6 +69,11 @@ void Validate(const Config& c) {
     throw core::ConfigError(c.source, "worlds." + e.key(), e.value(), e.problem());
   }
   try {
+    c.render.Validate();
+  } catch (const core::ConfigError& e) {
+    throw core::ConfigError(c.source, e.key(), e.value(), e.problem());
+  }
+  try {
     c.motion.Validate();
   } catch (const core::ConfigError& e) {
     throw core::ConfigError(c.source, e.key(), e.value(), e.problem());
@@ -102,6 +107,17 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     m.Read("agent_radius", &c.motion.agent_radius, 0.01, 20.0);
     m.Read("substeps", &c.motion.substeps, 1, 1000);
     m.Finish();
+  }
+  {
+    YamlSection r = top.Section("render");
+    r.Read("width", &c.render.width, 8, 4096);
+    r.Read("height", &c.render.height, 2, 2048);
+    r.Read("vertical_fov_deg", &c.render.vertical_fov_deg, 10.0, 150.0);
+    r.Read("camera_height", &c.render.camera_height, 0.01, 1000.0);
+    r.Read("wall_height", &c.render.wall_height, 0.01, 1000.0);
+    r.Read("supersample", &c.render.supersample, 1, 4);
+    r.Read("plain_wall_fraction", &c.render.plain_wall_fraction, 0.0, 1.0);
+    r.Finish();
   }
   {
     YamlSection p = top.Section("picture");

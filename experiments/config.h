@@ -8,6 +8,7 @@
 
 #include "core/world.h"
 #include "sim/motion.h"
+#include "sim/render.h"
 #include "sim/worlds.h"
 
 namespace toponav::experiments {
@@ -29,6 +30,7 @@ struct Config {
   std::string source = "<defaults>";  // the file it was loaded from
   sim::WorldOptions worlds;
   sim::MotionOptions motion;
+  sim::RenderOptions render;
   PictureOptions picture;
   DemoJob demo;
 };

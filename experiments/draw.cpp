@@ -13,6 +13,16 @@ using core::Vec2;
 
 namespace {
 
+void Save(const cv::Mat& image, const std::string& path) {
+  bool ok = false;
+  try {
+    ok = cv::imwrite(path, image);
+  } catch (const cv::Exception& e) {
+    throw core::DataError(path, std::string("cannot write the picture: ") + e.what());
+  }
+  if (!ok) throw core::DataError(path, "cannot write the picture");
+}
+
 // World -> pixel mapping with a margin; colours are BGR.
 class Canvas {
  public:
@@ -42,15 +52,7 @@ class Canvas {
     std::vector<std::vector<cv::Point>> polys{Px(r)};
     cv::polylines(image, polys, true, c, thickness, cv::LINE_AA);
   }
-  void Save(const std::string& path) const {
-    bool ok = false;
-    try {
-      ok = cv::imwrite(path, image);
-    } catch (const cv::Exception& e) {
-      throw core::DataError(path, std::string("cannot write the picture: ") + e.what());
-    }
-    if (!ok) throw core::DataError(path, "cannot write the picture");
-  }
+  void Save(const std::string& path) const { experiments::Save(image, path); }
   cv::Mat image;
 
  private:
@@ -103,7 +105,48 @@ void DrawAgent(Canvas& c, const core::Pose2& pose, const cv::Scalar& color) {
   c.Fill(tri, color);
 }
 
+cv::Mat ToBgr(const sim::Panorama& p) {
+  if (p.rgb.empty()) throw core::InternalError("panorama has no colour image");
+  cv::Mat rgb(p.height, p.width, CV_8UC3, const_cast<uint8_t*>(p.rgb.data()));
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
+}
+
 }  // namespace
+
+void WritePanoramaPng(const sim::Panorama& pano, const std::string& png_path) { Save(ToBgr(pano), png_path); }
+
+void WriteDepthPng(const sim::Panorama& pano, double max_depth, const std::string& png_path) {
+  if (pano.depth.empty()) throw core::InternalError("panorama has no depth image");
+  cv::Mat grey(pano.height, pano.width, CV_8UC1);
+  for (int r = 0; r < pano.height; ++r)
+    for (int c = 0; c < pano.width; ++c) {
+      const double d = pano.depth[size_t(r) * pano.width + c];
+      grey.at<uint8_t>(r, c) = uint8_t(std::lround(255.0 * std::clamp(1.0 - d / max_depth, 0.0, 1.0)));
+    }
+  Save(grey, png_path);
+}
+
+void WriteContactSheet(const std::vector<sim::Panorama>& panos, const std::vector<std::string>& captions,
+                       const std::string& png_path) {
+  if (panos.empty()) throw core::InternalError("contact sheet of no panoramas");
+  const int gap = 4, w = panos[0].width;
+  int h = 0;
+  for (const auto& p : panos) h += p.height + gap;
+  cv::Mat sheet(h - gap, w, CV_8UC3, cv::Scalar(255, 255, 255));
+  int y = 0;
+  for (size_t i = 0; i < panos.size(); ++i) {
+    cv::Mat bgr = ToBgr(panos[i]);
+    bgr.copyTo(sheet(cv::Rect(0, y, w, panos[i].height)));
+    if (i < captions.size()) {
+      cv::putText(sheet, captions[i], {6, y + 14}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 3, cv::LINE_AA);
+      cv::putText(sheet, captions[i], {6, y + 14}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+    }
+    y += panos[i].height + gap;
+  }
+  Save(sheet, png_path);
+}
 
 void DrawWorldPicture(const core::World& world, const PictureOptions& options, const std::string& png_path) {
   Canvas c(world, options);

@@ -6,6 +6,7 @@
 #include "core/world.h"
 #include "experiments/config.h"
 #include "sim/raycast.h"
+#include "sim/render.h"
 
 namespace toponav::experiments {
 
@@ -18,5 +19,12 @@ void DrawWorldPicture(const core::World& world, const PictureOptions& options, c
 void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
                             const std::vector<sim::VisibleVertex>& visible, const core::Ring& visibility_polygon,
                             const PictureOptions& options, const std::string& png_path);
+
+// A panorama as a PNG (RGB), its depth as a grey PNG (near bright, 'max_depth' and beyond black), or K
+// panoramas stacked top to bottom with a caption on each (a contact sheet).
+void WritePanoramaPng(const sim::Panorama& pano, const std::string& png_path);
+void WriteDepthPng(const sim::Panorama& pano, double max_depth, const std::string& png_path);
+void WriteContactSheet(const std::vector<sim::Panorama>& panos, const std::vector<std::string>& captions,
+                       const std::string& png_path);
 
 }  // namespace toponav::experiments

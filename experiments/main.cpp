@@ -1,9 +1,10 @@
-// toponav: the command-line front end.  Subcommands: world, observe, demo, info.
+// toponav: the command-line front end.  Subcommands: world, observe, render, demo, info.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -169,6 +170,65 @@ int RunObserve(const ObserveArgs& a) {
   return 0;
 }
 
+// ---------------------------------------------------------------- render
+
+struct RenderArgs {
+  std::string world_file, kind, config, pose, out = "pano.png", depth, ids;
+  uint64_t seed = 0;
+  int poses = 0;
+};
+
+core::World WorldFromArgs(const std::string& world_file, const std::string& kind, uint64_t seed,
+                          const experiments::Config& cfg) {
+  if (!world_file.empty()) return sim::LoadWorld(world_file);
+  if (!kind.empty()) return sim::GenerateWorld(ParseKind(kind), cfg.worlds, seed);
+  throw core::ConfigError("<command line>", "--world", "", "give --world FILE or --kind K --seed N");
+}
+
+int RunRender(const RenderArgs& a) {
+  const experiments::Config cfg = LoadOrDefault(a.config);
+  const core::World w = WorldFromArgs(a.world_file, a.kind, a.seed, cfg);
+  const sim::Renderer renderer(w, cfg.render);
+  if (a.poses > 0) {
+    // A contact sheet of K panoramas along a path: the guiding path where there is one, otherwise a
+    // shortest clear path from the start to the goal.
+    std::vector<core::Vec2> path = w.guide_path;
+    if (path.size() < 2) path = sim::FreePath(w, w.start.position(), w.goal, cfg.motion.agent_radius * 3);
+    if (path.size() < 2) throw core::DataError("<world>", "no clear path from the start to the goal");
+    std::vector<sim::Panorama> panos;
+    std::vector<std::string> captions;
+    double total_ms = 0;
+    for (const auto& pose : sim::PosesAlong(path, a.poses)) {
+      const auto t0 = Clock::now();
+      panos.push_back(renderer.Render(pose));
+      total_ms += MsSince(t0);
+      captions.push_back(fmt::format("x {:.1f}  y {:.1f}  yaw {:.2f}", pose.x, pose.y, pose.yaw));
+    }
+    experiments::WriteContactSheet(panos, captions, a.out);
+    fmt::print("wrote {} ({} panoramas of {}x{}, {:.1f} ms each)\n", a.out, panos.size(), cfg.render.width,
+               cfg.render.height, total_ms / double(panos.size()));
+    return 0;
+  }
+  const core::Pose2 pose = a.pose.empty() ? w.start : ParsePose(a.pose);
+  const int outputs = sim::kRenderRgb | (a.depth.empty() ? 0 : sim::kRenderDepth) | (a.ids.empty() ? 0 : sim::kRenderIds);
+  const auto t0 = Clock::now();
+  const sim::Panorama pano = renderer.Render(pose, outputs);
+  const double ms = MsSince(t0);
+  experiments::WritePanoramaPng(pano, a.out);
+  if (!a.depth.empty()) experiments::WriteDepthPng(pano, 100.0, a.depth);
+  if (!a.ids.empty()) {
+    std::ofstream out(a.ids);
+    if (!out) throw core::DataError(a.ids, "cannot open for writing");
+    out << "# obstacle id per pixel, " << pano.height << " rows x " << pano.width
+        << " columns; -1 none, ring*65536+edge for walls, 1073741824+i for clutter item i\n";
+    for (int r = 0; r < pano.height; ++r)
+      for (int c = 0; c < pano.width; ++c) out << pano.ids[size_t(r) * pano.width + c] << (c + 1 < pano.width ? ' ' : '\n');
+  }
+  fmt::print("wrote {} ({}x{}, {} triangles, rendered in {:.1f} ms)\n", a.out, pano.width, pano.height,
+             renderer.num_triangles(), ms);
+  return 0;
+}
+
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -187,11 +247,13 @@ int RunDemo(const std::string& config_path, const std::string& out_override) {
     const auto visible = caster.VisibleVertices(w.start);
     const auto poly = caster.VisibilityPolygon(w.start.position());
     experiments::DrawObservationPicture(w, w.start, visible, poly, cfg.picture, dir + "/observation.png");
+    const sim::Renderer renderer(w, cfg.render);
+    experiments::WritePanoramaPng(renderer.Render(w.start), dir + "/panorama.png");
     const auto problems = experiments::CheckWorld(w, cfg.worlds);
     fmt::print("  {:<12} {:>4} vertices {:>3} clutter  generated in {:6.1f} ms  {} visible from start  {}\n",
                core::ToString(kind), core::MapVertices(w).size(), w.clutter.size(), gen_ms, visible.size(),
                problems.empty() ? "ok" : "PROBLEMS: " + problems.front());
-    fmt::print("  {:<12} {}/world.json  {}/world.png  {}/observation.png\n", "", dir, dir, dir);
+    fmt::print("  {:<12} {}/world.json  {}/world.png  {}/observation.png  {}/panorama.png\n", "", dir, dir, dir, dir);
   }
   return 0;
 }
@@ -239,8 +301,20 @@ int main(int argc, char** argv) {
   observe->add_option("--max-range", oa.max_range, "Only vertices closer than this (default: unlimited)");
   observe->add_option("--png", oa.png, "Also draw the observation to this PNG");
 
+  RenderArgs ra;
+  auto* render = app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
+  render->add_option("--world", ra.world_file, "World file (world.json)");
+  render->add_option("--kind", ra.kind, "Or generate a world of this kind ...");
+  render->add_option("--seed", ra.seed, "... from this seed")->capture_default_str();
+  render->add_option("--config", ra.config, "YAML config (render: width, height, camera_height, ...)");
+  render->add_option("--pose", ra.pose, "Camera pose x,y,yaw (default: the world's start)");
+  render->add_option("--out", ra.out, "Output PNG")->capture_default_str();
+  render->add_option("--poses", ra.poses, "Instead: a contact sheet of this many panoramas along a path to the goal");
+  render->add_option("--depth", ra.depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
+  render->add_option("--ids", ra.ids, "Also write the obstacle-id image as text (one row per line)");
+
   std::string demo_config = "configs/demo.yaml", demo_out;
-  auto* demo = app.add_subcommand("demo", "The default job: one world of each kind, pictures and JSON under results/");
+  auto* demo = app.add_subcommand("demo", "The default job: one world of each kind: its JSON, top-down picture, observation and panorama under results/");
   demo->add_option("--config", demo_config, "Job config")->capture_default_str();
   demo->add_option("--out", demo_out, "Output directory (default: demo.out_dir of the config)");
 
@@ -252,6 +326,7 @@ int main(int argc, char** argv) {
   try {
     if (*world) return RunWorld(wa);
     if (*observe) return RunObserve(oa);
+    if (*render) return RunRender(ra);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);
   } catch (const core::ConfigError& e) {

@@ -3,7 +3,9 @@
 #include <string>
 
 #include "sim/motion.h"
+#include "sim/paths.h"
 #include "sim/raycast.h"
+#include "sim/render.h"
 #include "sim/world_io.h"
 #include "sim/worlds.h"
 

@@ -61,6 +61,29 @@ void BM_MotionStep(benchmark::State& state) {
 }
 BENCHMARK(BM_MotionStep)->Unit(benchmark::kMicrosecond);
 
+// One 128x512 RGB panorama (4 cube faces + resampling) from poses along a path through the world.
+void BM_RenderPanorama(benchmark::State& state) {
+  const auto kind = static_cast<core::WorldKind>(state.range(0));
+  const core::World w = GenerateWorld(kind, {}, 1);
+  const Renderer renderer(w, {});
+  std::vector<core::Vec2> path = w.guide_path;
+  if (path.size() < 2) path = FreePath(w, w.start.position(), w.goal, 3.0);
+  const auto poses = PosesAlong(path, 64);
+  renderer.Render(poses[0]);  // context creation and scene upload happen once, outside the timing
+  size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(renderer.Render(poses[i++ % poses.size()]));
+  state.SetLabel(std::string(core::ToString(kind)) + ", " + std::to_string(renderer.num_triangles()) + " triangles");
+}
+BENCHMARK(BM_RenderPanorama)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_RenderPanoramaWithDepthAndIds(benchmark::State& state) {
+  const core::World w = GenerateLabyrinth({}, 1);
+  const Renderer renderer(w, {});
+  renderer.Render(w.start);
+  for (auto _ : state) benchmark::DoNotOptimize(renderer.Render(w.start, kRenderRgb | kRenderDepth | kRenderIds));
+}
+BENCHMARK(BM_RenderPanoramaWithDepthAndIds)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 }  // namespace
 }  // namespace toponav::sim
 

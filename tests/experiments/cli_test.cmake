@@ -21,7 +21,7 @@ endfunction()
 # help for every subcommand
 run(0 ${TOPONAV} --help)
 expect_contains("${OUT}" "observe")
-foreach(sub world observe demo info)
+foreach(sub world observe render demo info)
   run(0 ${TOPONAV} ${sub} --help)
   expect_contains("${OUT}" "--")
 endforeach()
@@ -57,6 +57,20 @@ file(WRITE ${WORK}/plan.json [=[{"boundary": [[0,0],[40,0],[40,30],[0,30]], "obs
 run(0 ${TOPONAV} observe --world ${WORK}/plan.json --pose 5,5,0)
 expect_contains("${OUT}" "corner")
 run(0 ${TOPONAV} world --world ${WORK}/plan.json --out ${WORK}/plan)
+
+# render: a panorama with depth and ids, and a contact sheet
+run(0 ${TOPONAV} render --kind guided_maze --seed 4 --out ${WORK}/pano.png --depth ${WORK}/depth.png --ids ${WORK}/ids.txt)
+expect_contains("${OUT}" "512x128")
+foreach(f pano.png depth.png ids.txt)
+  if(NOT EXISTS ${WORK}/${f})
+    message(FATAL_ERROR "render did not write ${f}")
+  endif()
+endforeach()
+run(0 ${TOPONAV} render --world ${WORK}/plan.json --poses 2 --out ${WORK}/sheet.png)
+expect_contains("${OUT}" "2 panoramas")
+file(WRITE ${WORK}/bad_render.yaml "render:\n  width: 510\n")
+run(2 ${TOPONAV} render --kind labyrinth --config ${WORK}/bad_render.yaml --out ${WORK}/x.png)
+expect_contains("${ERR}" "render.width")
 
 # errors name the file and the problem
 file(WRITE ${WORK}/bad.json [=[{"obstacles": [[[0,0],[2,2],[2,0],[0,2]]], "start": {"x": -3, "y": -3}, "goal": [5,5]}]=])
