@@ -91,6 +91,26 @@ nlohmann::json ObservationJson(const core::Pose2& pose, const std::vector<sim::V
   return j;
 }
 
+// Where a command's world comes from: a file, or a generator kind and seed (with an optional config).
+struct WorldSource {
+  std::string world_file, kind, config, pose;
+  uint64_t seed = 0;
+};
+
+void AddWorldSourceOptions(CLI::App* cmd, WorldSource* src, const std::string& config_help) {
+  cmd->add_option("--world", src->world_file, "World file (world.json)");
+  cmd->add_option("--kind", src->kind, "Or generate a world of this kind ...");
+  cmd->add_option("--seed", src->seed, "... from this seed")->capture_default_str();
+  cmd->add_option("--config", src->config, config_help);
+  cmd->add_option("--pose", src->pose, "Agent pose x,y,yaw (world units, radians); default: the world's start");
+}
+
+core::World WorldFromSource(const WorldSource& src, const experiments::Config& cfg) {
+  if (!src.world_file.empty()) return sim::LoadWorld(src.world_file);
+  if (!src.kind.empty()) return sim::GenerateWorld(ParseKind(src.kind), cfg.worlds, src.seed);
+  throw core::ConfigError("<command line>", "--world", "", "give --world FILE or --kind K --seed N");
+}
+
 // ---------------------------------------------------------------- world
 
 struct WorldArgs {
@@ -145,18 +165,14 @@ int RunWorld(const WorldArgs& a) {
 
 // ---------------------------------------------------------------- observe
 
-struct ObserveArgs {
-  std::string world_file, kind, config, pose, png;
-  uint64_t seed = 0;
+struct ObserveArgs : WorldSource {
+  std::string png;
   double max_range = 0;
 };
 
 int RunObserve(const ObserveArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
-  core::World w;
-  if (!a.world_file.empty()) w = sim::LoadWorld(a.world_file);
-  else if (!a.kind.empty()) w = sim::GenerateWorld(ParseKind(a.kind), cfg.worlds, a.seed);
-  else throw core::ConfigError("<command line>", "--world", "", "give --world FILE or --kind K --seed N");
+  const core::World w = WorldFromSource(a, cfg);
   const core::Pose2 pose = a.pose.empty() ? w.start : ParsePose(a.pose);
   const sim::RayCaster caster(w);
   const double range = a.max_range > 0 ? a.max_range : std::numeric_limits<double>::infinity();
@@ -172,22 +188,14 @@ int RunObserve(const ObserveArgs& a) {
 
 // ---------------------------------------------------------------- render
 
-struct RenderArgs {
-  std::string world_file, kind, config, pose, out = "pano.png", depth, ids;
-  uint64_t seed = 0;
+struct RenderArgs : WorldSource {
+  std::string out = "pano.png", depth, ids;
   int poses = 0;
 };
 
-core::World WorldFromArgs(const std::string& world_file, const std::string& kind, uint64_t seed,
-                          const experiments::Config& cfg) {
-  if (!world_file.empty()) return sim::LoadWorld(world_file);
-  if (!kind.empty()) return sim::GenerateWorld(ParseKind(kind), cfg.worlds, seed);
-  throw core::ConfigError("<command line>", "--world", "", "give --world FILE or --kind K --seed N");
-}
-
 int RunRender(const RenderArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
-  const core::World w = WorldFromArgs(a.world_file, a.kind, a.seed, cfg);
+  const core::World w = WorldFromSource(a, cfg);
   const sim::Renderer renderer(w, cfg.render);
   if (a.poses > 0) {
     // A contact sheet of K panoramas along a path: the guiding path where there is one, otherwise a
@@ -293,21 +301,13 @@ int main(int argc, char** argv) {
 
   ObserveArgs oa;
   auto* observe = app.add_subcommand("observe", "Print the ground-truth observation from a pose as JSON");
-  observe->add_option("--world", oa.world_file, "World file (world.json)");
-  observe->add_option("--kind", oa.kind, "Or generate a world of this kind ...");
-  observe->add_option("--seed", oa.seed, "... from this seed")->capture_default_str();
-  observe->add_option("--config", oa.config, "YAML config with generator options");
-  observe->add_option("--pose", oa.pose, "Agent pose x,y,yaw (world units, radians); default: the world's start");
+  AddWorldSourceOptions(observe, &oa, "YAML config with generator options");
   observe->add_option("--max-range", oa.max_range, "Only vertices closer than this (default: unlimited)");
   observe->add_option("--png", oa.png, "Also draw the observation to this PNG");
 
   RenderArgs ra;
   auto* render = app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
-  render->add_option("--world", ra.world_file, "World file (world.json)");
-  render->add_option("--kind", ra.kind, "Or generate a world of this kind ...");
-  render->add_option("--seed", ra.seed, "... from this seed")->capture_default_str();
-  render->add_option("--config", ra.config, "YAML config (render: width, height, camera_height, ...)");
-  render->add_option("--pose", ra.pose, "Camera pose x,y,yaw (default: the world's start)");
+  AddWorldSourceOptions(render, &ra, "YAML config (render: width, height, camera_height, ...)");
   render->add_option("--out", ra.out, "Output PNG")->capture_default_str();
   render->add_option("--poses", ra.poses, "Instead: a contact sheet of this many panoramas along a path to the goal");
   render->add_option("--depth", ra.depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");

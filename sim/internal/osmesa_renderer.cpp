@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "core/detection.h"
 #include "core/error.h"
@@ -413,20 +414,17 @@ Panorama Renderer::Render(const core::Pose2& pose, int outputs) const {
       }
     }
   }
-  if (outputs & kRenderDepth) {
-    std::vector<float> atlas(size_t(atlas_w) * fh);
-    glReadBuffer(GL_COLOR_ATTACHMENT1);
-    glReadPixels(0, 0, atlas_w, fh, GL_RED, GL_FLOAT, atlas.data());
-    pano.depth.resize(pixels);
-    for (size_t k = 0; k < pixels; ++k) pano.depth[k] = atlas[m.nearest[k]];
-  }
-  if (outputs & kRenderIds) {
-    std::vector<int32_t> atlas(size_t(atlas_w) * fh);
-    glReadBuffer(GL_COLOR_ATTACHMENT2);
-    glReadPixels(0, 0, atlas_w, fh, GL_RED_INTEGER, GL_INT, atlas.data());
-    pano.ids.resize(pixels);
-    for (size_t k = 0; k < pixels; ++k) pano.ids[k] = atlas[m.nearest[k]];
-  }
+  // Depth and ids: nearest source pixel (interpolating them would invent values between surfaces).
+  auto read_nearest = [&](auto* out, GLenum attachment, GLenum format, GLenum type) {
+    using T = std::remove_reference_t<decltype((*out)[0])>;
+    std::vector<T> atlas(size_t(atlas_w) * fh);
+    glReadBuffer(attachment);
+    glReadPixels(0, 0, atlas_w, fh, format, type, atlas.data());
+    out->resize(pixels);
+    for (size_t k = 0; k < pixels; ++k) (*out)[k] = atlas[m.nearest[k]];
+  };
+  if (outputs & kRenderDepth) read_nearest(&pano.depth, GL_COLOR_ATTACHMENT1, GL_RED, GL_FLOAT);
+  if (outputs & kRenderIds) read_nearest(&pano.ids, GL_COLOR_ATTACHMENT2, GL_RED_INTEGER, GL_INT);
   const GLenum err = glGetError();
   if (err != GL_NO_ERROR) GlFail("error " + std::to_string(err) + " while rendering");
   return pano;
