@@ -68,6 +68,13 @@ void Validate(const Config& c) {
   } catch (const core::ConfigError& e) {
     throw core::ConfigError(c.source, "worlds." + e.key(), e.value(), e.problem());
   }
+  for (auto validate : {+[](const Config& x) { x.sensor.Validate(); }, +[](const Config& x) { x.mapping.Validate(); }}) {
+    try {
+      validate(c);
+    } catch (const core::ConfigError& e) {
+      throw core::ConfigError(c.source, e.key(), e.value(), e.problem());
+    }
+  }
   try {
     c.render.Validate();
   } catch (const core::ConfigError& e) {
@@ -117,6 +124,43 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("wall_height", &c.render.wall_height, 0.01, 1000.0);
     r.Read("supersample", &c.render.supersample, 1, 4);
     r.Read("plain_wall_fraction", &c.render.plain_wall_fraction, 0.0, 1.0);
+    r.Finish();
+  }
+  {
+    YamlSection r = top.Section("sensor");
+    auto& o = c.sensor;
+    r.Read("max_range", &o.max_range, 1.0, 1e4);
+    r.Read("range_bins", &o.range_bins, 0, 1024);
+    r.Read("bearing_bins", &o.bearing_bins, 0, 4096);
+    r.Read("range_sigma", &o.range_sigma, 0.0, 100.0);
+    r.Read("range_sigma_per_unit", &o.range_sigma_per_unit, 0.0, 1.0);
+    r.Read("bearing_sigma", &o.bearing_sigma, 0.0, 1.0);
+    r.Read("miss_probability", &o.miss_probability, 0.0, 0.99);
+    r.Read("false_positives_per_observation", &o.false_positives_per_observation, 0.0, 50.0);
+    r.Read("merge_bins", &o.merge_bins, 0, 10);
+    r.Read("label_confusion", &o.label_confusion, 0.0, 1.0);
+    r.Read("label_softness", &o.label_softness, 0.0, 1.0);
+    r.Read("reported_sigma_range", &o.reported_sigma_range, 1e-3, 100.0);
+    r.Read("reported_sigma_bearing", &o.reported_sigma_bearing, 1e-4, 3.0);
+    r.Finish();
+  }
+  {
+    YamlSection r = top.Section("mapping");
+    auto& o = c.mapping;
+    r.Read("association_gate_chi2", &o.association_gate_chi2, 0.01, 1000.0);
+    r.Read("false_positive_rate", &o.false_positive_rate, 1e-6, 0.999);
+    r.Read("false_negative_rate", &o.false_negative_rate, 1e-6, 0.999);
+    r.Read("vertex_log_prior", &o.vertex_log_prior, -100.0, 0.0);
+    r.Read("wall_log_prior", &o.wall_log_prior, -100.0, 0.0);
+    r.Read("min_detections", &o.min_detections, 1, 1000);
+    r.Read("wall_threshold", &o.wall_threshold, 0.01, 0.99);
+    r.Read("wall_skip_damping", &o.wall_skip_damping, 0.0, 1.0);
+    r.Read("edge_log_floor", &o.edge_log_floor, -100.0, -1e-6);
+    r.Read("mcmc_samples", &o.mcmc_samples, 0, 100000);
+    r.Read("max_range", &o.max_range, 1.0, 1e4);
+    r.Read("star_rebuild_tolerance", &o.star_rebuild_tolerance, 0.0, 100.0);
+    r.Read("union_block", &o.union_block, 1, 100000);
+    r.Read("frontier_wall_tolerance", &o.frontier_wall_tolerance, 0.0, 100.0);
     r.Finish();
   }
   {

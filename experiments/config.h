@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "core/world.h"
+#include "mapping/mapping.h"
 #include "sim/motion.h"
+#include "sim/noisy_sensor.h"
 #include "sim/render.h"
 #include "sim/worlds.h"
 
@@ -31,6 +33,8 @@ struct Config {
   sim::WorldOptions worlds;
   sim::MotionOptions motion;
   sim::RenderOptions render;
+  sim::NoisySensorOptions sensor;
+  mapping::MapperOptions mapping;
   PictureOptions picture;
   DemoJob demo;
 };

@@ -157,6 +157,38 @@ void DrawWorldPicture(const core::World& world, const PictureOptions& options, c
   c.Save(png_path);
 }
 
+void DrawMapPicture(const core::World& world, const mapping::MapView& map,
+                    const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
+                    const std::string& png_path) {
+  Canvas c(world, options);
+  c.image.setTo(cv::Scalar(200, 200, 200));  // unknown
+  for (const auto& poly : map.known_space) {
+    std::vector<std::vector<cv::Point>> rings{c.Px(poly.outer)};
+    for (const auto& h : poly.holes) rings.push_back(c.Px(h));
+    cv::fillPoly(c.image, rings, cv::Scalar(252, 252, 252), cv::LINE_AA);
+  }
+  for (const core::Ring* r : core::MapRings(world)) c.Outline(*r, cv::Scalar(170, 170, 170), 1);  // true walls
+  static const cv::Scalar kAgentColours[] = {cv::Scalar(220, 90, 20), cv::Scalar(30, 160, 30), cv::Scalar(160, 40, 170)};
+  for (size_t a = 0; a < agent_paths.size(); ++a) {
+    std::vector<cv::Point> pts;
+    for (const auto& p : agent_paths[a]) pts.push_back(c.Px(p));
+    if (pts.size() > 1)
+      cv::polylines(c.image, std::vector<std::vector<cv::Point>>{pts}, false, kAgentColours[a % 3], 1, cv::LINE_AA);
+  }
+  for (const auto& f : map.frontiers)  // dashed
+    for (size_t i = 1; i < f.points.size(); ++i) {
+      const core::Vec2 a = f.points[i - 1], b = f.points[i];
+      const double len = core::Distance(a, b);
+      for (double t = 0; t < len; t += 3.0)
+        cv::line(c.image, c.Px(a + (b - a) * (t / len)), c.Px(a + (b - a) * (std::min(t + 1.8, len) / len)),
+                 cv::Scalar(200, 0, 200), 2, cv::LINE_AA);
+    }
+  for (const auto& w : map.walls) cv::line(c.image, c.Px(w.pa), c.Px(w.pb), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
+  for (const auto& v : map.vertices) cv::circle(c.image, c.Px(v.position), 3, cv::Scalar(0, 0, 0), cv::FILLED, cv::LINE_AA);
+  for (const auto& v : map.rejected) cv::circle(c.image, c.Px(v.position), 4, cv::Scalar(0, 0, 230), 2, cv::LINE_AA);
+  c.Save(png_path);
+}
+
 void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
                             const std::vector<sim::VisibleVertex>& visible, const core::Ring& visibility_polygon,
                             const PictureOptions& options, const std::string& png_path) {

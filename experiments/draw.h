@@ -5,6 +5,7 @@
 
 #include "core/world.h"
 #include "experiments/config.h"
+#include "mapping/mapping.h"
 #include "sim/raycast.h"
 #include "sim/render.h"
 
@@ -19,6 +20,12 @@ void DrawWorldPicture(const core::World& world, const PictureOptions& options, c
 void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
                             const std::vector<sim::VisibleVertex>& visible, const core::Ring& visibility_polygon,
                             const PictureOptions& options, const std::string& png_path);
+
+// A map over the true world: true walls faint, known space shaded, frontiers dashed (magenta), map walls and
+// vertices black, rejected vertices red, the agents' paths in their own colours.
+void DrawMapPicture(const core::World& world, const mapping::MapView& map,
+                    const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
+                    const std::string& png_path);
 
 // A panorama as a PNG (RGB), its depth as a grey PNG (near bright, 'max_depth' and beyond black), or K
 // panoramas stacked top to bottom with a caption on each (a contact sheet).

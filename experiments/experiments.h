@@ -2,4 +2,5 @@
 // Front door of the experiments layer: configuration, pictures and world checks used by the CLI.
 #include "experiments/config.h"
 #include "experiments/draw.h"
+#include "experiments/map_drive.h"
 #include "experiments/world_checks.h"

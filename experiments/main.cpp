@@ -237,6 +237,63 @@ int RunRender(const RenderArgs& a) {
   return 0;
 }
 
+// ---------------------------------------------------------------- map
+
+struct MapArgs : WorldSource {
+  std::string out = "results/map", seeds;
+  experiments::MapDriveOptions drive;
+  bool no_mcmc = false;
+};
+
+int RunMap(MapArgs a) {
+  const experiments::Config cfg = LoadOrDefault(a.config);
+  if (a.no_mcmc) a.drive.mcmc_every = 0;
+  EnsureDir(a.out);
+  const std::vector<uint64_t> seeds = a.seeds.empty() ? std::vector<uint64_t>{a.seed} : ParseSeeds(a.seeds);
+  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0;
+  for (uint64_t seed : seeds) {
+    WorldSource src = a;
+    src.seed = seed;
+    const core::World w = WorldFromSource(src, cfg);
+    experiments::MapDriveOptions d = a.drive;
+    d.seed = seed;
+    const auto t0 = Clock::now();
+    const experiments::MapDriveResult r = experiments::RunMapDrive(w, cfg, d);
+    const double ms = MsSince(t0);
+    const std::string stem = seeds.size() == 1 ? "map" : fmt::format("map_s{}", seed);
+    experiments::DrawMapPicture(w, r.view, {r.agent_path}, cfg.picture, (fs::path(a.out) / (stem + ".png")).string());
+    nlohmann::json j;
+    j["seed"] = seed;
+    j["steps"] = r.steps;
+    j["known_space_iou"] = r.known_space_iou;
+    j["map_vertices"] = r.map_vertices;
+    j["false_vertices"] = r.false_vertices;
+    j["rejected_vertices"] = r.view.rejected.size();
+    j["map_walls"] = r.map_walls;
+    j["false_walls"] = r.false_walls;
+    j["frontiers"] = r.view.frontiers.size();
+    j["log_posterior"] = r.view.log_posterior;
+    j["mean_update_ms"] = r.mean_update_ms;
+    j["mean_mcmc_ms"] = r.mean_mcmc_ms;
+    j["wall_time_ms"] = ms;
+    std::ofstream((fs::path(a.out) / (stem + ".json")).string()) << j.dump(1) << "\n";
+    fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected)  walls {:>3} ({} false)  "
+               "update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
+               seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(),
+               r.map_walls, r.false_walls, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
+    iou_sum += r.known_space_iou;
+    false_sum += r.false_vertices;
+    vert_sum += r.map_vertices;
+    wall_false += r.false_walls;
+    wall_sum += r.map_walls;
+  }
+  if (seeds.size() > 1)
+    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} %\n", seeds.size(),
+               iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum, vert_sum,
+               100.0 * wall_false / std::max(1.0, wall_sum));
+  return 0;
+}
+
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -313,6 +370,16 @@ int main(int argc, char** argv) {
   render->add_option("--depth", ra.depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
   render->add_option("--ids", ra.ids, "Also write the obstacle-id image as text (one row per line)");
 
+  MapArgs ma;
+  auto* map = app.add_subcommand("map", "Drive an agent along a path with the noisy sensor and build the probabilistic map");
+  AddWorldSourceOptions(map, &ma, "YAML config (sensor:, mapping:, motion:)");
+  map->add_option("--seeds", ma.seeds, "Several seeds A-B (files then named map_sSEED)");
+  map->add_option("--path", ma.drive.path, "Path to drive: tour (whole free space), guide, goal")->capture_default_str();
+  map->add_option("--steps", ma.drive.max_steps, "At most this many steps")->capture_default_str();
+  map->add_option("--mcmc-every", ma.drive.mcmc_every, "MCMC every this many steps")->capture_default_str();
+  map->add_flag("--no-mcmc", ma.no_mcmc, "Build the map without the posterior (every potential vertex kept)");
+  map->add_option("--out", ma.out, "Output directory: map.png and map.json")->capture_default_str();
+
   std::string demo_config = "configs/demo.yaml", demo_out;
   auto* demo = app.add_subcommand("demo", "The default job: one world of each kind: its JSON, top-down picture, observation and panorama under results/");
   demo->add_option("--config", demo_config, "Job config")->capture_default_str();
@@ -327,6 +394,7 @@ int main(int argc, char** argv) {
     if (*world) return RunWorld(wa);
     if (*observe) return RunObserve(oa);
     if (*render) return RunRender(ra);
+    if (*map) return RunMap(ma);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);
   } catch (const core::ConfigError& e) {

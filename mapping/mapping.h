@@ -1,3 +1,116 @@
 #pragma once
-// Front door of the mapping layer.  So far: exact polygon Booleans for known space.
+// Front door of the mapping layer: the probabilistic polygonal vertex map of the paper (Sec. III).
+// Detections are associated to vertices (Mahalanobis gate on the innovation, one-to-one per observation),
+// fused by Kalman updates, joined by walls whose probability averages the sensor's edge likelihoods, and
+// MCMC over vertex inclusion picks the most likely map under the posterior; known space is the union of
+// conservative per-observation star polygons.  Planners read an immutable MapView, never the Mapper.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/geometry.h"
+#include "core/observation.h"
+#include "core/rng.h"
 #include "mapping/polygon_set.h"
+
+namespace toponav::mapping {
+
+struct MapperOptions {
+  double association_gate_chi2 = 9.21;    // chi-square(2 dof) 99 % gate on the innovation (P + R)
+  double false_positive_rate = 0.2;       // R_fp of the posterior
+  double false_negative_rate = 0.2;       // R_fn of the posterior
+  double vertex_log_prior = -3.22;        // per vertex in the map (2 log R_fp, the reference's bias)
+  double wall_log_prior = -0.5;           // per wall in the map
+  int min_detections = 3;                 // a vertex needs this many detections to enter a map
+  double wall_threshold = 0.5;            // a wall exists when its averaged likelihood exceeds this
+  double wall_skip_damping = 0.2;         // evidence for detections k apart is scaled by this^(k-1)
+  double edge_log_floor = -1.386;         // log 0.25: an edge term never costs more than this
+  int mcmc_samples = 50;                  // proposals per SampleMostLikelyMap call (the paper's 50)
+  double max_range = 100.0;               // range of hypothetical observations
+  double star_rebuild_tolerance = 0.25;   // rebuild an observation's known space when its vertices move this far
+  int union_block = 16;                   // observations per cached partial union
+  double frontier_wall_tolerance = 0.05;  // known-space boundary this close to a map wall is wall, not frontier
+  std::optional<core::Aabb2> world_bounds;  // if set, observations from outside are rejected
+  void Validate() const;                  // throws core::ConfigError ("mapping.association_gate_chi2", ...)
+};
+
+struct MapVertex {
+  int id = 0;
+  core::Vec2 position;
+  core::Cov2 covariance;
+  int num_detections = 0;
+};
+
+struct MapWall {
+  int a = 0, b = 0;          // vertex ids
+  core::Vec2 pa, pb;
+  double probability = 0.0;  // averaged edge likelihood
+};
+
+// A piece of the known-space boundary that is not a map wall: where unknown space begins.
+struct Frontier {
+  int id = 0;                       // stable across steps while the frontier stays put
+  std::vector<core::Vec2> points;   // polyline along the known-space boundary
+  core::Vec2 midpoint;              // the point halfway along it
+  double length = 0.0;
+};
+
+struct MapView {
+  std::vector<MapVertex> vertices;   // the map's vertices
+  std::vector<MapVertex> rejected;   // vertices with enough detections that the posterior leaves out
+  std::vector<MapWall> walls;        // walls between map vertices
+  std::vector<core::Polygon> known_space;
+  std::vector<Frontier> frontiers;
+  double log_posterior = 0.0;
+  int num_observations = 0;
+  double known_area() const;
+};
+
+struct MapperStats {
+  int num_potential_vertices = 0;
+  int num_walls_with_evidence = 0;
+  int last_mcmc_accepted = 0;
+  int last_mcmc_evaluated_observations = 0;
+};
+
+class Mapper {
+ public:
+  explicit Mapper(const MapperOptions& options);
+  ~Mapper();
+  Mapper(const Mapper&) = delete;
+  Mapper& operator=(const Mapper&) = delete;
+
+  // Associates the detections, updates vertices and walls.  Observations of several agents may be added in
+  // turn.  Throws core::DataError (and leaves the map unchanged) for NaN or infinite values, a covariance
+  // that is not positive definite, or a pose outside options.world_bounds.
+  void AddObservation(const core::Observation& observation);
+
+  // MCMC over vertex inclusion (options.mcmc_samples proposals, uniform random vertex flips, Metropolis
+  // acceptance); leaves the map at the most likely state seen and returns its log posterior.
+  double SampleMostLikelyMap(core::Rng& rng);
+
+  // The log posterior of the current map (all observations).
+  double LogPosterior() const;
+
+  // The current map with its known space and frontiers (computed incrementally and cached).
+  MapView View() const;
+
+  // All potential vertices and their inclusion flags (for tests and pictures).
+  std::vector<MapVertex> PotentialVertices() const;
+  MapperStats Stats() const;
+  const MapperOptions& options() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Builds the star-shaped polygon of points seen from 'center' (vertexnav.md §2.7): points sorted by bearing,
+// the center inserted wherever consecutive bearings are pi or more apart.  Points at the center or at the
+// same bearing as a nearer point are dropped.  Fewer than 2 usable points give an empty ring.
+core::Ring StarPolygon(const core::Vec2& center, const std::vector<core::Vec2>& points);
+
+// Minimum-cost one-to-one assignment of rows to columns (rows <= columns); returns the column of each row.
+std::vector<int> SolveAssignment(const std::vector<std::vector<double>>& cost);
+
+}  // namespace toponav::mapping

@@ -11,6 +11,11 @@ namespace toponav::sim {
 std::vector<core::Vec2> FreePath(const core::World& world, const core::Vec2& from, const core::Vec2& to,
                                  double clearance, double cell = 2.0);
 
+// A drive that visits the whole free space: from 'from', repeatedly to the nearest (by path length) not yet
+// visited point of a grid with the given spacing that keeps 'clearance'; the polyline of the whole tour.
+std::vector<core::Vec2> CoverageTour(const core::World& world, const core::Vec2& from, double spacing,
+                                     double clearance, double cell = 2.0);
+
 // 'count' poses evenly spaced by arc length along 'path' (endpoints included), yaw along the path.
 std::vector<core::Pose2> PosesAlong(const std::vector<core::Vec2>& path, int count);
 

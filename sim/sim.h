@@ -3,6 +3,7 @@
 #include <string>
 
 #include "sim/motion.h"
+#include "sim/noisy_sensor.h"
 #include "sim/paths.h"
 #include "sim/raycast.h"
 #include "sim/render.h"

@@ -1,0 +1,88 @@
+#include "experiments/map_drive.h"
+
+#include <chrono>
+#include <limits>
+
+#include "core/error.h"
+#include "core/rng.h"
+#include "sim/motion.h"
+#include "sim/noisy_sensor.h"
+#include "sim/paths.h"
+
+namespace toponav::experiments {
+
+double KnownSpaceIoU(const core::World& world, const mapping::MapView& map) {
+  mapping::PolygonSet known;
+  std::vector<mapping::PolygonSet> parts;
+  for (const auto& p : map.known_space) parts.push_back(mapping::PolygonSet::FromPolygon(p));
+  known = mapping::PolygonSet::JoinAll(parts);
+  return mapping::IoU(known, mapping::PolygonSet::FromPolygon(core::FreeSpacePolygon(world)));
+}
+
+MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& o) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<core::Vec2> path;
+  const double clearance = std::max(3.0, 3 * config.motion.agent_radius);
+  if (o.path == "guide") path = world.guide_path;
+  else if (o.path == "goal") path = sim::FreePath(world, world.start.position(), world.goal, clearance);
+  else if (o.path == "tour") path = sim::CoverageTour(world, world.start.position(), o.tour_spacing, clearance);
+  else throw core::ConfigError("<command line>", "--path", o.path, "expected tour, guide or goal");
+  if (path.size() < 2) throw core::DataError("<world>", "no drivable path of kind '" + o.path + "'");
+
+  mapping::MapperOptions mo = config.mapping;
+  mo.world_bounds = world.bounds;
+  mapping::Mapper mapper(mo);
+  auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(o.seed, 1));
+  core::Rng rng(core::DeriveSeed(o.seed, 2));
+  sim::MotionSim motion(world, config.motion);
+  const int agent = motion.AddAgent(world.start);
+
+  MapDriveResult r;
+  double update_ms = 0, mcmc_ms = 0;
+  int mcmc_calls = 0;
+  size_t waypoint = 1;
+  r.agent_path.push_back(world.start.position());
+  for (int step = 0; step < o.max_steps && waypoint < path.size(); ++step) {
+    const core::Pose2 pose = motion.Pose(agent);
+    auto t0 = Clock::now();
+    mapper.AddObservation(sensor->Observe(pose, agent));
+    update_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    if (o.mcmc_every > 0 && (step + 1) % o.mcmc_every == 0) {
+      t0 = Clock::now();
+      mapper.SampleMostLikelyMap(rng);
+      mcmc_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+      ++mcmc_calls;
+    }
+    // Follow the path; waypoints already reached are dropped.
+    std::vector<core::Vec2> rest(path.begin() + long(waypoint), path.end());
+    const sim::StepResult s = motion.Step(agent, rest);
+    r.agent_path.push_back(s.pose.position());
+    while (waypoint < path.size() && core::Distance(s.pose.position(), path[waypoint]) < 0.5 * config.motion.step_length)
+      ++waypoint;
+    if (s.blocked) ++waypoint;  // skip a waypoint we cannot reach (clutter in the way)
+    r.steps = step + 1;
+  }
+  if (o.mcmc_every > 0) mapper.SampleMostLikelyMap(rng);
+  r.view = mapper.View();
+  r.known_space_iou = KnownSpaceIoU(world, r.view);
+  const auto truth = core::MapVertices(world);
+  const auto true_walls = core::MapWalls(world);
+  r.map_vertices = int(r.view.vertices.size());
+  for (const auto& v : r.view.vertices) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& t : truth) best = std::min(best, core::Distance(v.position, t));
+    r.false_vertices += best > kVertexMatchRadius;
+  }
+  r.map_walls = int(r.view.walls.size());
+  for (const auto& w : r.view.walls) {
+    const core::Vec2 mid = (w.pa + w.pb) * 0.5;
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& t : true_walls) best = std::min(best, core::DistanceToSegment(mid, t));
+    r.false_walls += best > kVertexMatchRadius;
+  }
+  r.mean_update_ms = r.steps > 0 ? update_ms / r.steps : 0.0;
+  r.mean_mcmc_ms = mcmc_calls > 0 ? mcmc_ms / mcmc_calls : 0.0;
+  return r;
+}
+
+}  // namespace toponav::experiments

@@ -1,0 +1,42 @@
+#pragma once
+// Building a map along a scripted drive: one agent follows a path through the world, observing with the
+// noisy sensor each step, MCMC on a cadence.  Used by `toponav map` and the mapping quality tests.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/world.h"
+#include "experiments/config.h"
+#include "mapping/mapping.h"
+
+namespace toponav::experiments {
+
+struct MapDriveOptions {
+  std::string path = "tour";   // "tour" (visit the whole free space), "guide" (the guide path), "goal" (start to goal)
+  double tour_spacing = 30.0;  // tour waypoint grid spacing
+  int max_steps = 3000;        // stop after this many agent steps even if the path goes on
+  int mcmc_every = 5;          // run MCMC every this many steps (and once at the end); 0: never
+  uint64_t seed = 0;           // sensor and MCMC randomness
+};
+
+struct MapDriveResult {
+  mapping::MapView view;
+  std::vector<core::Vec2> agent_path;
+  int steps = 0;
+  double known_space_iou = 0.0;   // known space vs true free space
+  int map_vertices = 0;
+  int false_vertices = 0;         // map vertices farther than 'vertex_match_radius' from any true vertex
+  int map_walls = 0;
+  int false_walls = 0;            // map walls whose midpoint is farther than the radius from every true wall
+  double mean_update_ms = 0.0;    // Mapper::AddObservation
+  double mean_mcmc_ms = 0.0;      // Mapper::SampleMostLikelyMap
+};
+
+constexpr double kVertexMatchRadius = 5.0;
+
+MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& options);
+
+// Intersection over union of the map's known space and the world's true free space (map walls only).
+double KnownSpaceIoU(const core::World& world, const mapping::MapView& map);
+
+}  // namespace toponav::experiments

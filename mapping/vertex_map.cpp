@@ -1,0 +1,572 @@
+// The Mapper: association, Kalman updates, wall evidence, posterior, MCMC, known space and frontiers.
+// References: the paper's Sec. III and vertexnav.md §2 (with the fixes of §10 items 2-3, 7).
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "core/error.h"
+#include "mapping/mapping.h"
+
+namespace toponav::mapping {
+
+using core::Vec2;
+
+namespace {
+
+Eigen::Matrix2d ToEigen(const core::Cov2& c) {
+  Eigen::Matrix2d m;
+  m << c.xx, c.xy, c.xy, c.yy;
+  return m;
+}
+core::Cov2 FromEigen(const Eigen::Matrix2d& m) { return {m(0, 0), 0.5 * (m(0, 1) + m(1, 0)), m(1, 1)}; }
+Vec2 ToVec(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
+uint64_t WallKey(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
+}
+double Wrap2Pi(double a) {
+  a = std::fmod(a, 2 * core::kPi);
+  return a < 0 ? a + 2 * core::kPi : a;
+}
+bool BoxHits(const core::Aabb2& b, const Vec2& p, double grow) {
+  return p.x >= b.min.x - grow && p.x <= b.max.x + grow && p.y >= b.min.y - grow && p.y <= b.max.y + grow;
+}
+bool BoxHitsSegment(const core::Aabb2& b, const Vec2& p, const Vec2& q, double grow) {
+  return std::max(p.x, q.x) >= b.min.x - grow && std::min(p.x, q.x) <= b.max.x + grow &&
+         std::max(p.y, q.y) >= b.min.y - grow && std::min(p.y, q.y) <= b.max.y + grow;
+}
+
+}  // namespace
+
+double MapView::known_area() const {
+  double a = 0;
+  for (const auto& p : known_space) a += core::Area(p);
+  return a;
+}
+
+void MapperOptions::Validate() const {
+  auto fail = [](const char* key, double v, const char* why) {
+    throw core::ConfigError("<options>", key, std::to_string(v), why);
+  };
+  if (!(association_gate_chi2 > 0)) fail("mapping.association_gate_chi2", association_gate_chi2, "must be > 0");
+  if (!(false_positive_rate > 0 && false_positive_rate < 1)) fail("mapping.false_positive_rate", false_positive_rate, "must be in (0, 1)");
+  if (!(false_negative_rate > 0 && false_negative_rate < 1)) fail("mapping.false_negative_rate", false_negative_rate, "must be in (0, 1)");
+  if (!(vertex_log_prior <= 0)) fail("mapping.vertex_log_prior", vertex_log_prior, "must be <= 0");
+  if (!(wall_log_prior <= 0)) fail("mapping.wall_log_prior", wall_log_prior, "must be <= 0");
+  if (min_detections < 1) fail("mapping.min_detections", min_detections, "must be >= 1");
+  if (!(wall_threshold > 0 && wall_threshold < 1)) fail("mapping.wall_threshold", wall_threshold, "must be in (0, 1)");
+  if (!(wall_skip_damping >= 0 && wall_skip_damping <= 1)) fail("mapping.wall_skip_damping", wall_skip_damping, "must be in [0, 1]");
+  if (!(edge_log_floor < 0)) fail("mapping.edge_log_floor", edge_log_floor, "must be < 0");
+  if (mcmc_samples < 0) fail("mapping.mcmc_samples", mcmc_samples, "must be >= 0");
+  if (!(max_range > 0)) fail("mapping.max_range", max_range, "must be > 0");
+  if (!(star_rebuild_tolerance >= 0)) fail("mapping.star_rebuild_tolerance", star_rebuild_tolerance, "must be >= 0");
+  if (union_block < 1) fail("mapping.union_block", union_block, "must be >= 1");
+  if (!(frontier_wall_tolerance >= 0)) fail("mapping.frontier_wall_tolerance", frontier_wall_tolerance, "must be >= 0");
+}
+
+struct Mapper::Impl {
+  struct Vertex {
+    Eigen::Vector2d x;
+    Eigen::Matrix2d P;
+    int n = 0;
+    bool in_map = true;  // the MCMC state; only counts once n >= min_detections
+  };
+  struct WallStats {
+    double sum = 0.0;
+    int count = 0;
+  };
+  struct Obs {
+    core::Pose2 pose;
+    std::vector<core::Detection> det;
+    std::vector<int> vid;          // vertex of each detection
+    // Star polygon of the real observation from the positions its vertices had when it was built.
+    core::Ring star;
+    core::Aabb2 box;
+    std::vector<Vec2> star_src;
+    // Cached conservative known space S_c of this observation, with what it was built from.
+    std::vector<int> sc_ids;
+    std::vector<Vec2> sc_pos;
+    PolygonSet sc;
+    bool sc_valid = false;
+  };
+
+  MapperOptions o;
+  std::vector<Vertex> v;
+  std::unordered_map<uint64_t, WallStats> walls;
+  std::vector<std::vector<int>> neighbours;  // vertex -> vertices it shares wall evidence with
+  std::vector<Obs> obs;
+  mutable std::vector<PolygonSet> blocks;
+  mutable std::vector<char> block_dirty;
+  mutable PolygonSet total;
+  mutable bool total_dirty = true;
+  mutable std::vector<Frontier> last_frontiers;
+  mutable int next_frontier_id = 0;
+  MapperStats stats;
+
+  bool Mapped(int i) const { return v[size_t(i)].n >= o.min_detections && v[size_t(i)].in_map; }
+  double WallProb(int a, int b) const {
+    auto it = walls.find(WallKey(a, b));
+    return it == walls.end() ? 0.0 : it->second.sum / (it->second.count + 1);  // shrinks one sighting to 1/2
+  }
+  bool WallMapped(int a, int b) const { return Mapped(a) && Mapped(b) && WallProb(a, b) > o.wall_threshold; }
+  Vec2 Pos(int i) const { return ToVec(v[size_t(i)].x); }
+
+  // ------------------------------------------------------------ adding observations
+
+  void Validate(const core::Observation& z) const {
+    auto bad = [](const std::string& what) { throw core::DataError("<observation>", what); };
+    if (!std::isfinite(z.pose.x) || !std::isfinite(z.pose.y) || !std::isfinite(z.pose.yaw)) bad("pose is not finite");
+    if (o.world_bounds && !o.world_bounds->Contains(z.pose.position()))
+      bad("pose (" + std::to_string(z.pose.x) + ", " + std::to_string(z.pose.y) + ") is outside the world");
+    for (size_t k = 0; k < z.detections.size(); ++k) {
+      const auto& d = z.detections[k];
+      const std::string at = "detection " + std::to_string(k) + ": ";
+      if (!std::isfinite(d.range) || !std::isfinite(d.bearing) || d.range < 0) bad(at + "range/bearing is NaN, infinite or negative");
+      const auto& c = d.polar;
+      if (!std::isfinite(c.xx) || !std::isfinite(c.xy) || !std::isfinite(c.yy) || c.xx <= 0 || c.yy <= 0 ||
+          c.xx * c.yy - c.xy * c.xy <= 0)
+        bad(at + "covariance is not positive definite");
+      for (double p : d.labels)
+        if (!std::isfinite(p) || p < 0) bad(at + "label probabilities must be finite and non-negative");
+    }
+  }
+
+  void Add(const core::Observation& z) {
+    Validate(z);
+    Obs ob;
+    ob.pose = z.pose;
+    ob.det = z.detections;
+    std::sort(ob.det.begin(), ob.det.end(), [](const auto& a, const auto& b) { return a.bearing < b.bearing; });
+    const size_t n = ob.det.size();
+    std::vector<Eigen::Vector2d> zpos(n);
+    std::vector<Eigen::Matrix2d> R(n);
+    for (size_t k = 0; k < n; ++k) {
+      const Vec2 p = core::DetectionPosition(z.pose, ob.det[k]);
+      zpos[k] = {p.x, p.y};
+      R[k] = ToEigen(core::DetectionCovariance(z.pose, ob.det[k]));
+    }
+    // Association: rows = detections, columns = gated candidate vertices + one "new vertex" slot per
+    // detection.  Cost = squared Mahalanobis distance of the innovation (covariance P + R); a new vertex
+    // costs the gate itself.  The assignment is one-to-one: no two detections of one observation share a vertex.
+    std::vector<int> cand;
+    std::unordered_map<int, int> col_of;
+    std::vector<std::vector<std::pair<int, double>>> gated(n);
+    for (size_t k = 0; k < n; ++k) {
+      for (size_t i = 0; i < v.size(); ++i) {
+        const Eigen::Matrix2d S = v[i].P + R[k];
+        const Eigen::Vector2d e = zpos[k] - v[i].x;
+        // Cheap rejection: m^2 >= |e|^2 / lambda_max(S) >= |e|^2 / trace(S).
+        if (e.squaredNorm() > o.association_gate_chi2 * S.trace()) continue;
+        const double m2 = e.dot(S.ldlt().solve(e));
+        if (m2 < o.association_gate_chi2) {
+          if (!col_of.count(int(i))) {
+            col_of[int(i)] = int(cand.size());
+            cand.push_back(int(i));
+          }
+          gated[k].push_back({int(i), m2});
+        }
+      }
+    }
+    ob.vid.assign(n, -1);
+    if (n > 0) {
+      const double big = 1e9;
+      std::vector<std::vector<double>> cost(n, std::vector<double>(cand.size() + n, big));
+      for (size_t k = 0; k < n; ++k) {
+        for (const auto& [vi, m2] : gated[k]) cost[k][size_t(col_of[vi])] = m2;
+        cost[k][cand.size() + k] = o.association_gate_chi2;
+      }
+      const std::vector<int> col = SolveAssignment(cost);
+      for (size_t k = 0; k < n; ++k)
+        if (col[k] >= 0 && size_t(col[k]) < cand.size() && cost[k][size_t(col[k])] < big) ob.vid[k] = cand[size_t(col[k])];
+    }
+    // Kalman updates of matched vertices; new vertices for the rest.
+    for (size_t k = 0; k < n; ++k) {
+      if (ob.vid[k] >= 0) {
+        Vertex& x = v[size_t(ob.vid[k])];
+        const Eigen::Matrix2d K = x.P * (x.P + R[k]).inverse();
+        x.x += K * (zpos[k] - x.x);
+        x.P = (Eigen::Matrix2d::Identity() - K) * x.P;
+        x.P = 0.5 * (x.P + x.P.transpose());
+        x.n += 1;
+      } else {
+        Vertex nv;
+        nv.x = zpos[k];
+        nv.P = R[k];
+        nv.n = 1;
+        v.push_back(nv);
+        neighbours.emplace_back();
+        ob.vid[k] = int(v.size()) - 1;
+      }
+    }
+    // Wall evidence: every pair less than pi apart, R = i and L = j counter-clockwise of it; detections
+    // between them scale the evidence by wall_skip_damping each (vertexnav.md §2.4).
+    for (size_t i = 0; i < n; ++i)
+      for (size_t s = 1; s < n; ++s) {
+        const size_t j = (i + s) % n;
+        if (Wrap2Pi(ob.det[j].bearing - ob.det[i].bearing) >= core::kPi) break;
+        const int a = ob.vid[i], b = ob.vid[j];
+        if (a == b) continue;
+        const double q = 1.0 - 0.5 * (core::NoWallCcw(ob.det[i].labels) + core::NoWallCw(ob.det[j].labels));
+        WallStats& w = walls[WallKey(a, b)];
+        if (w.count == 0) {
+          neighbours[size_t(a)].push_back(b);
+          neighbours[size_t(b)].push_back(a);
+        }
+        w.sum += std::pow(o.wall_skip_damping, double(s - 1)) * q;
+        w.count += 1;
+      }
+    obs.push_back(std::move(ob));
+    RefreshStar(obs.size() - 1);
+    if (blocks.size() * size_t(o.union_block) < obs.size()) {
+      blocks.emplace_back();
+      block_dirty.push_back(1);
+    }
+    total_dirty = true;
+  }
+
+  // ------------------------------------------------------------ stars, hypothetical observations, posterior
+
+  void RefreshStar(size_t i) {
+    Obs& ob = obs[i];
+    std::vector<Vec2> pts;
+    for (int id : ob.vid) pts.push_back(Pos(id));
+    ob.star = StarPolygon(ob.pose.position(), pts);
+    ob.star_src = pts;
+    ob.box = ob.star.empty() ? core::Aabb2{ob.pose.position(), ob.pose.position()} : core::Bounds(ob.star);
+    ob.box = core::Bounds(std::vector<Vec2>{ob.pose.position()}, ob.box);
+  }
+
+  // Rebuilds star polygons whose vertices moved more than the tolerance.
+  void RefreshStars() {
+    for (size_t i = 0; i < obs.size(); ++i) {
+      const Obs& ob = obs[i];
+      bool moved = false;
+      for (size_t k = 0; k < ob.vid.size() && !moved; ++k)
+        moved = core::Distance(Pos(ob.vid[k]), ob.star_src[k]) > o.star_rebuild_tolerance;
+      if (moved) RefreshStar(i);
+    }
+  }
+
+  std::vector<std::pair<int, int>> MappedWalls() const {
+    std::vector<std::pair<int, int>> out;
+    for (const auto& [key, w] : walls) {
+      const int a = int(key >> 32), b = int(key & 0xffffffffu);
+      if (WallMapped(a, b)) out.push_back({a, b});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The hypothetical observation of observation i (paper Sec. III-B; vertexnav.md §2.6): mapped vertices in
+  // range, inside or on the real observation's star polygon, not hidden by a mapped wall; by bearing.
+  std::vector<int> Hypothetical(const Obs& ob, const std::vector<std::pair<int, int>>& mapped_walls) const {
+    const Vec2 p = ob.pose.position();
+    std::vector<std::pair<int, int>> near_walls;
+    for (const auto& w : mapped_walls)
+      if (BoxHitsSegment(ob.box, Pos(w.first), Pos(w.second), 1e-6)) near_walls.push_back(w);
+    std::vector<std::pair<double, int>> h;
+    auto consider = [&](int id, bool on_star) {
+      const Vec2 x = Pos(id);
+      if (core::Distance(x, p) >= o.max_range) return;
+      if (!on_star && !(BoxHits(ob.box, x, 1e-6) && (core::Contains(ob.star, x) || core::DistanceToRing(x, ob.star) < 1e-6)))
+        return;
+      for (const auto& w : near_walls) {
+        if (w.first == id || w.second == id) continue;
+        if (core::SegmentsIntersect({p, x}, {Pos(w.first), Pos(w.second)})) return;
+      }
+      h.push_back({std::atan2(x.y - p.y, x.x - p.x), id});
+    };
+    std::unordered_set<int> own(ob.vid.begin(), ob.vid.end());
+    for (int id : own)
+      if (Mapped(id)) consider(id, true);
+    if (!ob.star.empty())
+      for (size_t id = 0; id < v.size(); ++id)
+        if (Mapped(int(id)) && !own.count(int(id))) consider(int(id), false);
+    std::sort(h.begin(), h.end());
+    std::vector<int> out;
+    for (const auto& e : h) out.push_back(e.second);
+    return out;
+  }
+
+  // log P(z_i | m): false positives and negatives against the hypothetical observation, a truncated
+  // position term for matches, and edge terms along consecutive hypothetical vertices (Sec. III-C).
+  double ObservationLogLikelihood(const Obs& ob, const std::vector<std::pair<int, int>>& mapped_walls) const {
+    const std::vector<int> H = Hypothetical(ob, mapped_walls);
+    const double log_fp = std::log(o.false_positive_rate), log_fn = std::log(o.false_negative_rate);
+    std::unordered_map<int, int> slot;
+    for (size_t j = 0; j < H.size(); ++j) slot[H[j]] = int(j);
+    std::vector<int> det_of(H.size(), -1);
+    int fp = 0, matched = 0;
+    double ll = 0.0;
+    for (size_t k = 0; k < ob.det.size(); ++k) {
+      auto it = slot.find(ob.vid[k]);
+      if (it == slot.end() || det_of[size_t(it->second)] >= 0) {
+        ++fp;
+        continue;
+      }
+      det_of[size_t(it->second)] = int(k);
+      ++matched;
+      const Vec2 z = core::DetectionPosition(ob.pose, ob.det[k]);
+      const Eigen::Vector2d e(z.x - v[size_t(ob.vid[k])].x.x(), z.y - v[size_t(ob.vid[k])].x.y());
+      const Eigen::Matrix2d R = ToEigen(core::DetectionCovariance(ob.pose, ob.det[k]));
+      ll += std::max(-0.5 * e.dot(R.ldlt().solve(e)), log_fp);
+    }
+    ll += fp * log_fp + (int(H.size()) - matched) * log_fn;
+    if (H.size() >= 2) {
+      const Vec2 p = ob.pose.position();
+      const double floor = o.edge_log_floor;
+      for (size_t j = 0; j < H.size(); ++j) {
+        const size_t l = (j + 1) % H.size();
+        const Vec2 a = Pos(H[j]), b = Pos(H[l]);
+        const double gap = Wrap2Pi(std::atan2(b.y - p.y, b.x - p.x) - std::atan2(a.y - p.y, a.x - p.x));
+        if (gap >= core::kPi || H[j] == H[l]) continue;
+        const double no_ccw = det_of[j] >= 0 ? core::NoWallCcw(ob.det[size_t(det_of[j])].labels) : 0.5;
+        const double no_cw = det_of[l] >= 0 ? core::NoWallCw(ob.det[size_t(det_of[l])].labels) : 0.5;
+        const double q = 1.0 - 0.5 * (no_ccw + no_cw);
+        const double a_wall = WallMapped(H[j], H[l]) ? 1.0 : 0.0;
+        ll += std::max(std::log(std::max(1.0 - std::abs(q - a_wall), 1e-300)), floor);
+      }
+    }
+    return ll;
+  }
+
+  double LogPrior(const std::vector<std::pair<int, int>>& mapped_walls) const {
+    int nv = 0;
+    for (size_t i = 0; i < v.size(); ++i) nv += Mapped(int(i));
+    return nv * o.vertex_log_prior + double(mapped_walls.size()) * o.wall_log_prior;
+  }
+
+  double LogPosterior() const {
+    const auto mw = MappedWalls();
+    double lp = LogPrior(mw);
+    for (const auto& ob : obs) lp += ObservationLogLikelihood(ob, mw);
+    return lp;
+  }
+
+  // Observations whose likelihood can change when vertex i flips: their star polygon's box meets the vertex
+  // or one of the walls it could carry.
+  std::vector<int> Affected(int i) const {
+    std::vector<int> out;
+    const Vec2 x = Pos(i);
+    for (size_t k = 0; k < obs.size(); ++k) {
+      const Obs& ob = obs[k];
+      bool hit = BoxHits(ob.box, x, 1e-6);
+      for (size_t m = 0; m < neighbours[size_t(i)].size() && !hit; ++m)
+        hit = BoxHitsSegment(ob.box, x, Pos(neighbours[size_t(i)][m]), 1e-6);
+      if (hit) out.push_back(int(k));
+    }
+    return out;
+  }
+
+  double Sample(core::Rng& rng) {
+    RefreshStars();
+    std::vector<int> cand;
+    for (size_t i = 0; i < v.size(); ++i)
+      if (v[i].n >= o.min_detections) cand.push_back(int(i));
+    auto mw = MappedWalls();
+    std::vector<double> ll(obs.size());
+    double current = LogPrior(mw);
+    for (size_t k = 0; k < obs.size(); ++k) current += ll[k] = ObservationLogLikelihood(obs[k], mw);
+    stats.last_mcmc_accepted = 0;
+    stats.last_mcmc_evaluated_observations = 0;
+    if (cand.empty()) return current;
+    double best = current;
+    std::vector<char> best_state(v.size());
+    for (size_t i = 0; i < v.size(); ++i) best_state[i] = v[i].in_map;
+    for (int s = 0; s < o.mcmc_samples; ++s) {
+      const int i = cand[size_t(rng.UniformInt(0, int(cand.size()) - 1))];
+      const std::vector<int> affected = Affected(i);
+      const double old_prior = LogPrior(mw);
+      v[size_t(i)].in_map = !v[size_t(i)].in_map;
+      const auto new_mw = MappedWalls();
+      double delta = LogPrior(new_mw) - old_prior;
+      std::vector<double> new_ll(affected.size());
+      for (size_t a = 0; a < affected.size(); ++a) {
+        new_ll[a] = ObservationLogLikelihood(obs[size_t(affected[a])], new_mw);
+        delta += new_ll[a] - ll[size_t(affected[a])];
+      }
+      stats.last_mcmc_evaluated_observations += int(affected.size());
+      if (delta >= 0 || std::log(rng.Uniform()) < delta) {  // Metropolis (symmetric proposal)
+        current += delta;
+        mw = new_mw;
+        for (size_t a = 0; a < affected.size(); ++a) ll[size_t(affected[a])] = new_ll[a];
+        ++stats.last_mcmc_accepted;
+        if (current > best) {
+          best = current;
+          for (size_t k = 0; k < v.size(); ++k) best_state[k] = v[k].in_map;
+        }
+      } else {
+        v[size_t(i)].in_map = !v[size_t(i)].in_map;
+      }
+    }
+    for (size_t k = 0; k < v.size(); ++k) v[k].in_map = best_state[k];
+    total_dirty = true;
+    return best;
+  }
+
+  // ------------------------------------------------------------ known space and frontiers
+
+  void UpdateKnownSpace() const {
+    const auto mw = MappedWalls();
+    for (size_t i = 0; i < obs.size(); ++i) {
+      Obs& ob = const_cast<Obs&>(obs[i]);
+      const std::vector<int> H = Hypothetical(ob, mw);
+      std::vector<Vec2> pos;
+      for (int id : H) pos.push_back(Pos(id));
+      for (const auto& p : ob.star_src) pos.push_back(p);
+      bool same = ob.sc_valid && ob.sc_ids == H && ob.sc_pos.size() == pos.size();
+      for (size_t k = 0; same && k < pos.size(); ++k) same = core::Distance(pos[k], ob.sc_pos[k]) <= o.star_rebuild_tolerance;
+      if (same) continue;
+      std::vector<Vec2> hyp(pos.begin(), pos.begin() + long(H.size()));
+      const core::Ring sh = StarPolygon(ob.pose.position(), hyp);
+      ob.sc = PolygonSet();
+      if (!sh.empty() && !ob.star.empty()) {
+        ob.sc = PolygonSet::FromRing(ob.star);
+        ob.sc.Intersect(PolygonSet::FromRing(sh));
+      }
+      ob.sc_ids = H;
+      ob.sc_pos = pos;
+      ob.sc_valid = true;
+      block_dirty[i / size_t(o.union_block)] = 1;
+      total_dirty = true;
+    }
+    if (!total_dirty) return;
+    std::vector<PolygonSet> parts;
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      if (block_dirty[b]) {
+        std::vector<PolygonSet> members;
+        for (size_t i = b * size_t(o.union_block); i < std::min(obs.size(), (b + 1) * size_t(o.union_block)); ++i)
+          if (!obs[i].sc.empty()) members.push_back(obs[i].sc);
+        blocks[b] = PolygonSet::JoinAll(members);
+        block_dirty[b] = 0;
+      }
+      parts.push_back(blocks[b]);
+    }
+    total = PolygonSet::JoinAll(parts);
+    total_dirty = false;
+  }
+
+  std::vector<Frontier> Frontiers(const std::vector<core::Polygon>& known) const {
+    const auto mw = MappedWalls();
+    auto on_wall = [&](const Vec2& a, const Vec2& b) {
+      for (const auto& w : mw) {
+        const core::Segment2 s{Pos(w.first), Pos(w.second)};
+        if (core::DistanceToSegment(a, s) <= o.frontier_wall_tolerance &&
+            core::DistanceToSegment(b, s) <= o.frontier_wall_tolerance)
+          return true;
+      }
+      return false;
+    };
+    std::vector<Frontier> out;
+    auto walk = [&](const core::Ring& ring) {
+      const size_t n = ring.size();
+      std::vector<char> free_edge(n);
+      for (size_t i = 0; i < n; ++i) free_edge[i] = !on_wall(ring[i], ring[(i + 1) % n]);
+      // Start at a wall edge so chains do not wrap (a ring with no wall is one closed frontier).
+      size_t start = 0;
+      while (start < n && free_edge[start]) ++start;
+      const bool all_free = start == n;
+      if (all_free) start = 0;
+      Frontier cur;
+      for (size_t k = 0; k < n; ++k) {
+        const size_t i = (start + k) % n;
+        if (free_edge[i]) {
+          if (cur.points.empty()) cur.points.push_back(ring[i]);
+          cur.points.push_back(ring[(i + 1) % n]);
+        } else if (!cur.points.empty()) {
+          out.push_back(cur);
+          cur = Frontier();
+        }
+      }
+      if (!cur.points.empty()) out.push_back(cur);
+    };
+    for (const auto& p : known) {
+      walk(p.outer);
+      for (const auto& h : p.holes) walk(h);
+    }
+    for (auto& f : out) {
+      for (size_t i = 1; i < f.points.size(); ++i) f.length += core::Distance(f.points[i - 1], f.points[i]);
+      double half = f.length / 2, acc = 0;
+      f.midpoint = f.points.front();
+      for (size_t i = 1; i < f.points.size(); ++i) {
+        const double d = core::Distance(f.points[i - 1], f.points[i]);
+        if (acc + d >= half) {
+          f.midpoint = f.points[i - 1] + (f.points[i] - f.points[i - 1]) * ((half - acc) / std::max(d, 1e-12));
+          break;
+        }
+        acc += d;
+      }
+    }
+    // Stable identities: a frontier keeps the id of the previous one whose midpoint is nearest, if close.
+    std::vector<char> taken(last_frontiers.size());
+    for (auto& f : out) {
+      int best = -1;
+      double best_d = std::max(2.0, 0.5 * f.length);
+      for (size_t j = 0; j < last_frontiers.size(); ++j) {
+        const double d = core::Distance(f.midpoint, last_frontiers[j].midpoint);
+        if (!taken[j] && d < best_d) {
+          best_d = d;
+          best = int(j);
+        }
+      }
+      if (best >= 0) {
+        taken[size_t(best)] = 1;
+        f.id = last_frontiers[size_t(best)].id;
+      } else {
+        f.id = next_frontier_id++;
+      }
+    }
+    last_frontiers = out;
+    return out;
+  }
+};
+
+Mapper::Mapper(const MapperOptions& options) : impl_(std::make_unique<Impl>()) {
+  options.Validate();
+  impl_->o = options;
+}
+Mapper::~Mapper() = default;
+
+void Mapper::AddObservation(const core::Observation& z) { impl_->Add(z); }
+double Mapper::SampleMostLikelyMap(core::Rng& rng) { return impl_->Sample(rng); }
+double Mapper::LogPosterior() const { return impl_->LogPosterior(); }
+const MapperOptions& Mapper::options() const { return impl_->o; }
+
+std::vector<MapVertex> Mapper::PotentialVertices() const {
+  std::vector<MapVertex> out;
+  for (size_t i = 0; i < impl_->v.size(); ++i) {
+    const auto& x = impl_->v[i];
+    out.push_back({int(i), ToVec(x.x), FromEigen(x.P), x.n});
+  }
+  return out;
+}
+
+MapperStats Mapper::Stats() const {
+  MapperStats s = impl_->stats;
+  s.num_potential_vertices = int(impl_->v.size());
+  s.num_walls_with_evidence = int(impl_->walls.size());
+  return s;
+}
+
+MapView Mapper::View() const {
+  Impl& m = *impl_;
+  const_cast<Impl&>(m).RefreshStars();
+  m.UpdateKnownSpace();
+  MapView view;
+  for (size_t i = 0; i < m.v.size(); ++i) {
+    if (m.v[i].n < m.o.min_detections) continue;
+    const MapVertex mv{int(i), ToVec(m.v[i].x), FromEigen(m.v[i].P), m.v[i].n};
+    (m.v[i].in_map ? view.vertices : view.rejected).push_back(mv);
+  }
+  for (const auto& [a, b] : m.MappedWalls()) view.walls.push_back({a, b, m.Pos(a), m.Pos(b), m.WallProb(a, b)});
+  view.known_space = m.total.Polygons();
+  view.frontiers = m.Frontiers(view.known_space);
+  view.log_posterior = m.LogPosterior();
+  view.num_observations = int(m.obs.size());
+  return view;
+}
+
+}  // namespace toponav::mapping
