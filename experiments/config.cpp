@@ -1,5 +1,6 @@
 #include "experiments/config.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -111,7 +112,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   {
     YamlSection m = top.Section("motion");
     m.Read("step_length", &c.motion.step_length, 0.01, 50.0);
-    m.Read("agent_radius", &c.motion.agent_radius, 0.01, 20.0);
+    m.Read("agent_radius", &c.motion.agent_radius, 0.25, 20.0);
     m.Read("substeps", &c.motion.substeps, 1, 1000);
     m.Finish();
   }
@@ -192,6 +193,8 @@ Config ParseConfig(const std::string& text, const std::string& source) {
 }
 
 Config LoadConfig(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw core::ConfigError(path, "<file>", "", "not a readable file");
   std::ifstream in(path);
   if (!in) throw core::ConfigError(path, "<file>", "", "cannot open the config file");
   std::stringstream ss;

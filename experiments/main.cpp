@@ -42,12 +42,16 @@ std::vector<uint64_t> ParseSeeds(const std::string& text) {
   try {
     size_t used = 0;
     if (dash == std::string::npos) {
+      if (text.empty() || text[0] == '-' || text[0] == '+') throw std::invalid_argument(text);
       seeds.push_back(std::stoull(text, &used));
       if (used != text.size()) throw std::invalid_argument(text);
     } else {
-      const uint64_t a = std::stoull(text.substr(0, dash), &used);
-      const uint64_t b = std::stoull(text.substr(dash + 1));
-      if (b < a || b - a > 1000000) throw std::invalid_argument(text);
+      const std::string first = text.substr(0, dash), second = text.substr(dash + 1);
+      size_t used2 = 0;
+      if (first.empty() || second.empty() || first[0] == '-' || second[0] == '-') throw std::invalid_argument(text);
+      const uint64_t a = std::stoull(first, &used);
+      const uint64_t b = std::stoull(second, &used2);
+      if (used != first.size() || used2 != second.size() || b < a || b - a > 1000000) throw std::invalid_argument(text);
       for (uint64_t s = a; s <= b; ++s) seeds.push_back(s);
     }
   } catch (const std::exception&) {
@@ -359,14 +363,16 @@ int main(int argc, char** argv) {
   ObserveArgs oa;
   auto* observe = app.add_subcommand("observe", "Print the ground-truth observation from a pose as JSON");
   AddWorldSourceOptions(observe, &oa, "YAML config with generator options");
-  observe->add_option("--max-range", oa.max_range, "Only vertices closer than this (default: unlimited)");
+  observe->add_option("--max-range", oa.max_range, "Only vertices closer than this (default: unlimited)")
+      ->check(CLI::PositiveNumber);
   observe->add_option("--png", oa.png, "Also draw the observation to this PNG");
 
   RenderArgs ra;
   auto* render = app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
   AddWorldSourceOptions(render, &ra, "YAML config (render: width, height, camera_height, ...)");
   render->add_option("--out", ra.out, "Output PNG")->capture_default_str();
-  render->add_option("--poses", ra.poses, "Instead: a contact sheet of this many panoramas along a path to the goal");
+  render->add_option("--poses", ra.poses, "Instead: a contact sheet of this many panoramas along a path to the goal")
+      ->check(CLI::Range(1, 1000));
   render->add_option("--depth", ra.depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
   render->add_option("--ids", ra.ids, "Also write the obstacle-id image as text (one row per line)");
 
@@ -375,8 +381,8 @@ int main(int argc, char** argv) {
   AddWorldSourceOptions(map, &ma, "YAML config (sensor:, mapping:, motion:)");
   map->add_option("--seeds", ma.seeds, "Several seeds A-B (files then named map_sSEED)");
   map->add_option("--path", ma.drive.path, "Path to drive: tour (whole free space), guide, goal")->capture_default_str();
-  map->add_option("--steps", ma.drive.max_steps, "At most this many steps")->capture_default_str();
-  map->add_option("--mcmc-every", ma.drive.mcmc_every, "MCMC every this many steps")->capture_default_str();
+  map->add_option("--steps", ma.drive.max_steps, "At most this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
+  map->add_option("--mcmc-every", ma.drive.mcmc_every, "MCMC every this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
   map->add_flag("--no-mcmc", ma.no_mcmc, "Build the map without the posterior (every potential vertex kept)");
   map->add_option("--out", ma.out, "Output directory: map.png and map.json")->capture_default_str();
 
@@ -389,7 +395,12 @@ int main(int argc, char** argv) {
   auto* info = app.add_subcommand("info", "Print the versions of the libraries and check that each one works");
   info->add_flag("--cuda", prefer_cuda, "Ask for the CUDA backend (falls back to the CPU with a warning)");
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints help, or the error and a hint
+    return rc == 0 ? 0 : 2;
+  }
   try {
     if (*world) return RunWorld(wa);
     if (*observe) return RunObserve(oa);

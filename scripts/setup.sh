@@ -38,9 +38,15 @@ if [ "${TOPONAV_SKIP_INSTALL:-0}" != "1" ]; then
     if [ "$(id -u)" -eq 0 ]; then sudo_cmd=(); elif command -v sudo >/dev/null; then sudo_cmd=(sudo); else
       echo "setup.sh: need root or sudo to install: ${missing[*]}" >&2; exit 1; fi
     log "installing ${#missing[@]} missing packages: ${missing[*]}"
-    export DEBIAN_FRONTEND=noninteractive
-    "${sudo_cmd[@]}" apt-get update -qq
-    "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+    apt_log="$(mktemp)"
+    if ! { "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq &&
+           "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+             "${missing[@]}"; } >"$apt_log" 2>&1; then
+      tail -n 30 "$apt_log" >&2
+      echo "setup.sh: installing packages failed (full log: $apt_log)" >&2
+      exit 1
+    fi
+    rm -f "$apt_log"
     log "packages installed"
   else
     log "all ${#packages[@]} packages already installed"

@@ -18,7 +18,7 @@ struct RenderOptions {
   double vertical_fov_deg = 90.0;  // 128 rows over 90 degrees: square pixels at 512 columns
   double camera_height = 10.0;     // world units (the reference camera: 1.5 m at 0.15 m per unit)
   double wall_height = 30.0;       // indoor walls and ceiling
-  int supersample = 1;             // render the cube faces this many times larger (anti-aliasing)
+  int supersample = 1;             // render the cube faces this many times larger before resampling (less blur)
   double plain_wall_fraction = 0.35;  // share of textureless walls in indoor worlds
   void Validate() const;           // throws core::ConfigError ("render.width", ...)
 };

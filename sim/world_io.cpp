@@ -90,6 +90,14 @@ World WorldFromJson(const std::string& text, const std::string& source) {
     throw DataError(source, std::string("not valid JSON: ") + e.what());
   }
   Reader r(source);
+  if (!j.is_object()) r.Fail("<top level>", "expected an object");
+  static const char* kKeys[] = {"format", "kind", "seed", "boundary", "obstacles", "clutter", "bounds",
+                                "start", "goal", "guide_path", "guide_path_width"};
+  for (const auto& item : j.items()) {
+    bool known = false;
+    for (const char* k : kKeys) known = known || item.key() == k;
+    if (!known) r.Fail(item.key(), "unknown key");
+  }
   World w;
   if (j.contains("kind")) {
     const json& k = j["kind"];
@@ -156,9 +164,25 @@ void ValidateWorld(const World& w, const std::string& source) {
   if (w.has_boundary()) check_ring(w.boundary, "boundary");
   for (size_t i = 0; i < w.obstacles.size(); ++i) check_ring(w.obstacles[i], "obstacles[" + std::to_string(i) + "]");
   if (!w.has_boundary() && w.obstacles.empty()) throw DataError(source, "the world has no boundary and no obstacles");
+  // Rings must not cross, touch or nest (obstacles inside the boundary, not inside each other).
+  auto name = [](int i) { return i < 0 ? std::string("boundary") : "obstacles[" + std::to_string(i) + "]"; };
+  auto touches = [](const Ring& a, const Ring& b) {
+    for (size_t i = 0; i < a.size(); ++i)
+      for (size_t k = 0; k < b.size(); ++k)
+        if (core::SegmentsIntersect({a[i], a[(i + 1) % a.size()]}, {b[k], b[(k + 1) % b.size()]})) return true;
+    return false;
+  };
+  for (size_t i = 0; i < w.obstacles.size(); ++i) {
+    const Ring& o = w.obstacles[i];
+    if (w.has_boundary() && (touches(o, w.boundary) || !core::Contains(w.boundary, o[0])))
+      throw DataError(source, name(int(i)) + ": must lie inside the boundary without touching it");
+    for (size_t k = i + 1; k < w.obstacles.size(); ++k)
+      if (touches(o, w.obstacles[k]) || core::Contains(o, w.obstacles[k][0]) || core::Contains(w.obstacles[k], o[0]))
+        throw DataError(source, name(int(i)) + " and " + name(int(k)) + " overlap or touch");
+  }
   if (!(w.bounds.max.x > w.bounds.min.x && w.bounds.max.y > w.bounds.min.y))
     throw DataError(source, "bounds: max must exceed min");
-  if (!core::IsFree(w, w.start.position(), false))
+  if (!core::IsFree(w, w.start.position(), true))
     throw DataError(source, "start (" + std::to_string(w.start.x) + ", " + std::to_string(w.start.y) +
                                 ") is not in free space");
 }

@@ -211,7 +211,8 @@ std::vector<Ring> PlaceBuildings(const OfficeParkOptions& o, Rng& rng) {
     const double factor = type == 2 ? 0.5 : (type == 1 ? 1.5 : 1.0);
     const Vec2 c{rng.Uniform(-20.0, 280.0), rng.Uniform(-150.0, 150.0)};
     const double sx = rng.Uniform(o.scale_min, o.scale_max) * factor;
-    const double sy = rng.Uniform(o.scale_min, o.scale_max) * factor;
+    const double sy_draw = rng.Uniform(o.scale_min, o.scale_max) * factor;
+    const double sy = type == 2 ? sx : sy_draw;  // the square footprint stays square
     return Footprint(type, sx, sy, rng.Uniform(0.0, 2 * kPi), c);
   };
   for (int attempt = 0; attempt < 1000; ++attempt) {

@@ -11,6 +11,14 @@ YamlSection::YamlSection(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {
   if (node_ && !node_.IsNull() && !node_.IsMap())
     throw core::ConfigError(file_, path_.empty() ? "<top level>" : path_, Text(node_), "expected a mapping of keys");
+  if (!node_ || !node_.IsMap()) return;
+  // Keys must be plain scalars, each at most once (yaml-cpp keeps duplicates and would use the first).
+  std::set<std::string> seen;
+  for (const auto& kv : node_) {
+    if (!kv.first.IsScalar()) throw core::ConfigError(file_, KeyPath("<key>"), Text(kv.first), "keys must be plain names");
+    if (!seen.insert(kv.first.Scalar()).second)
+      throw core::ConfigError(file_, KeyPath(kv.first.Scalar()), Text(kv.second), "key given twice");
+  }
 }
 
 std::string YamlSection::KeyPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
@@ -46,6 +54,7 @@ void YamlSection::Read(const std::string& key, double* out, double lo, double hi
   if (!Has(key)) return;
   const YAML::Node n = Get(key);
   double v = 0;
+  if (n.IsScalar() && n.Tag() == "!") Fail(key, Text(n), "expected a number, not a quoted string");
   try {
     if (!n.IsScalar()) throw YAML::BadConversion(n.Mark());
     v = n.as<double>();
@@ -64,6 +73,7 @@ void YamlSection::Read(const std::string& key, int* out, int lo, int hi) {
   if (!Has(key)) return;
   const YAML::Node n = Get(key);
   long long v = 0;
+  if (n.IsScalar() && n.Tag() == "!") Fail(key, Text(n), "expected an integer, not a quoted string");
   try {
     if (!n.IsScalar()) throw YAML::BadConversion(n.Mark());
     v = n.as<long long>();
@@ -78,6 +88,7 @@ void YamlSection::Read(const std::string& key, int* out, int lo, int hi) {
 void YamlSection::Read(const std::string& key, uint64_t* out) {
   if (!Has(key)) return;
   const YAML::Node n = Get(key);
+  if (n.IsScalar() && n.Tag() == "!") Fail(key, Text(n), "expected a non-negative integer, not a quoted string");
   try {
     if (!n.IsScalar() || n.Scalar().empty() || n.Scalar()[0] == '-') throw YAML::BadConversion(n.Mark());
     *out = n.as<uint64_t>();
@@ -89,6 +100,7 @@ void YamlSection::Read(const std::string& key, uint64_t* out) {
 void YamlSection::Read(const std::string& key, bool* out) {
   if (!Has(key)) return;
   const YAML::Node n = Get(key);
+  if (n.IsScalar() && n.Tag() == "!") Fail(key, Text(n), "expected true or false, not a quoted string");
   try {
     if (!n.IsScalar()) throw YAML::BadConversion(n.Mark());
     *out = n.as<bool>();

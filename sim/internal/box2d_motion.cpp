@@ -37,7 +37,7 @@ void MotionOptions::Validate() const {
     throw core::ConfigError("<options>", key, std::to_string(v), why);
   };
   if (!(step_length > 0 && step_length <= 50)) fail("motion.step_length", step_length, "must be in (0, 50]");
-  if (!(agent_radius > 0 && agent_radius <= 20)) fail("motion.agent_radius", agent_radius, "must be in (0, 20]");
+  if (!(agent_radius >= 0.25 && agent_radius <= 20)) fail("motion.agent_radius", agent_radius, "must be in [0.25, 20]");
   if (!(substeps >= 1 && substeps <= 1000)) fail("motion.substeps", substeps, "must be in [1, 1000]");
 }
 
@@ -157,6 +157,11 @@ StepResult MotionSim::Step(int agent, const std::vector<Vec2>& waypoints) {
   bool reaches_end = true;
   for (const auto& w : waypoints) {
     const double d = core::Distance(cur, w);
+    if (budget <= 0) {
+      target = cur;
+      reaches_end = false;
+      break;
+    }
     if (d >= budget) {
       target = cur + (w - cur) * (budget / d);
       reaches_end = false;

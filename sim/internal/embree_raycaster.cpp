@@ -27,6 +27,10 @@ RTCDevice Device() {
     device = rtcNewDevice("threads=1");
     if (!device) throw core::InternalError("Embree: rtcNewDevice failed (error " +
                                            std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    // Walls, clutter and the far box are told apart by ray masks: an Embree built without them would let
+    // clutter hide vertices silently.
+    if (!rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_RAY_MASK_SUPPORTED))
+      throw core::InternalError("Embree was built without ray-mask support (EMBREE_RAY_MASK=ON is required)");
   });
   return device;
 }
@@ -175,6 +179,16 @@ RayCaster::RayCaster(const core::World& world) : impl_(std::make_unique<Impl>())
   }
   RTCDevice dev = Device();
   m.scene = rtcNewScene(dev);
+  struct SceneGuard {  // releases the scene if anything below throws
+    Impl* m;
+    bool armed = true;
+    ~SceneGuard() {
+      if (armed && m->scene) {
+        rtcReleaseScene(m->scene);
+        m->scene = nullptr;
+      }
+    }
+  } guard{&m};
   rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
   rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);
   auto attach = [&](const std::vector<core::Segment2>& segs, unsigned mask, unsigned expected_id) {
@@ -200,6 +214,7 @@ RayCaster::RayCaster(const core::World& world) : impl_(std::make_unique<Impl>())
   rtcCommitScene(m.scene);
   if (rtcGetDeviceError(dev) != RTC_ERROR_NONE)
     throw core::InternalError("Embree: building the scene failed (error " + std::to_string(int(rtcGetDeviceError(dev))) + ")");
+  guard.armed = false;
 }
 
 RayCaster::~RayCaster() {

@@ -114,18 +114,18 @@ GLuint Compile(GLenum type, const char* src) {
 // One OpenGL context per thread, created on first use and kept for the thread's lifetime.
 class ThreadGl {
  public:
-  ~ThreadGl() {
-    if (!ctx_) return;
-    MakeCurrent();
-    for (auto& s : scenes_) Free(s);
-    FreeFramebuffer();
-    glDeleteProgram(program_);
-    OSMesaDestroyContext(ctx_);
-  }
+  ~ThreadGl() { Destroy(); }
 
   static ThreadGl& Get() {
     thread_local ThreadGl gl;
-    if (!gl.ctx_) gl.Init();
+    if (!gl.ctx_) {
+      try {
+        gl.Init();
+      } catch (...) {
+        gl.Destroy();  // a failed start is retried on the next call, not cached half-made
+        throw;
+      }
+    }
     gl.MakeCurrent();
     return gl;
   }
@@ -216,6 +216,19 @@ class ThreadGl {
     GLint ok = 0;
     glGetProgramiv(program_, GL_LINK_STATUS, &ok);
     if (!ok) GlFail("shader program failed to link");
+  }
+
+  void Destroy() noexcept {
+    if (!ctx_) return;
+    if (OSMesaGetCurrentContext() == ctx_ || OSMesaMakeCurrent(ctx_, dummy_, GL_UNSIGNED_BYTE, 1, 1)) {
+      for (auto& s : scenes_) Free(s);
+      FreeFramebuffer();
+      if (program_) glDeleteProgram(program_);
+    }
+    scenes_.clear();
+    program_ = 0;
+    OSMesaDestroyContext(ctx_);
+    ctx_ = nullptr;
   }
 
   void MakeCurrent() {
@@ -315,13 +328,17 @@ Renderer::Renderer(const core::World& world, const RenderOptions& options) : imp
       const uint32_t t[4] = {uint32_t(y0 * atlas_w + x0), uint32_t(y0 * atlas_w + x1), uint32_t(y1 * atlas_w + x0),
                              uint32_t(y1 * atlas_w + x1)};
       const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-      int sum = 0;
+      int iw[4], sum = 0, largest = 0;
+      for (int i = 0; i < 4; ++i) {
+        iw[i] = int(std::lround(w[i] * 256));
+        sum += iw[i];
+        if (iw[i] > iw[largest]) largest = i;
+      }
+      iw[largest] += 256 - sum;  // exact sum (flat regions stay exact); the largest weight absorbs the rounding
       for (int i = 0; i < 4; ++i) {
         m.taps[4 * k + size_t(i)] = 4 * t[i];
-        m.weights[4 * k + size_t(i)] = uint16_t(std::lround(w[i] * 256));
-        sum += m.weights[4 * k + size_t(i)];
+        m.weights[4 * k + size_t(i)] = uint16_t(iw[i]);
       }
-      m.weights[4 * k] = uint16_t(m.weights[4 * k] + 256 - sum);  // exact sum: flat regions stay exact
       const int nx = std::clamp(int(std::lround(px)), lo_x, hi_x), ny = std::clamp(int(std::lround(py)), 0, m.face_h - 1);
       m.nearest[k] = uint32_t(ny * atlas_w + nx);
     }
@@ -356,7 +373,7 @@ Panorama Renderer::Render(const core::Pose2& pose, int outputs) const {
   const float ex = float(pose.x), ey = float(pose.y), ez = float(m.options.camera_height);
   glUniform3f(glGetUniformLocation(gl.program(), "cam"), ex, ey, ez);
   const GLint vp_loc = glGetUniformLocation(gl.program(), "view_proj");
-  const float n = 0.5f, f = 5000.f;  // the agent never stands closer than its radius (>= 0.5) to a wall
+  const float n = 0.2f, f = 5000.f;  // agents keep their radius (>= 0.25) from walls: nothing is nearer
   const float proj[16] = {1, 0, 0, 0, 0, 1 / m.tan_half_v, 0, 0, 0, 0, -(f + n) / (f - n), -2 * f * n / (f - n), 0, 0, -1, 0};
   glBindVertexArray(vao);
   std::vector<GLint> firsts;

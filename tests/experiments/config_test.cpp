@@ -86,3 +86,36 @@ TEST(Config, InvalidYamlIsAConfigError) {
 
 }  // namespace
 }  // namespace toponav::experiments
+
+namespace toponav::experiments {
+namespace {
+
+TEST(Config, DuplicateKeyIsAnError) {
+  try {
+    ParseConfig("motion:\n  step_length: 1.0\n  step_length: 2.0\n", "dup.yaml");
+    FAIL();
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(e.key(), "motion.step_length");
+    EXPECT_NE(std::string(e.what()).find("twice"), std::string::npos);
+  }
+}
+
+TEST(Config, QuotedNumberIsAnError) {
+  try {
+    ParseConfig("motion:\n  step_length: \"2.0\"\n", "q.yaml");
+    FAIL();
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(e.key(), "motion.step_length");
+  }
+}
+
+TEST(Config, NonScalarKeyIsAConfigError) {
+  EXPECT_THROW(ParseConfig("? [a, b]\n: 1\n", "k.yaml"), core::ConfigError);
+}
+
+TEST(Config, DirectoryIsNotAConfigFile) {
+  EXPECT_THROW(LoadConfig(TOPONAV_SOURCE_DIR "/configs"), core::ConfigError);
+}
+
+}  // namespace
+}  // namespace toponav::experiments

@@ -80,7 +80,15 @@ TEST(GeneratedWorlds, VisibilityPolygonIsFreeSpaceAndMatchesDenseRayFan) {
       PolygonSet outside = PolygonSet::FromRing(vis);
       outside.Difference(PolygonSet::FromPolygon(core::FreeSpacePolygon(w)));
       const double area = core::SignedArea(vis);
-      if (!w.has_boundary()) continue;  // open worlds: the polygon is closed by the far box, not by walls
+      if (!w.has_boundary()) {
+        // Open worlds: the polygon reaches the far box; inside the region it must still be free space.
+        PolygonSet in_region = PolygonSet::FromRing(vis);
+        in_region.Intersect(PolygonSet::FromPolygon({core::FreeSpacePolygon(w).outer, {}}));
+        in_region.Difference(PolygonSet::FromPolygon(core::FreeSpacePolygon(w)));
+        EXPECT_LT(in_region.Area(), 1e-6 * area) << core::ToString(kind) << " seed " << seed;
+        EXPECT_GT(area, w.bounds.width() * w.bounds.height()) << "the far box closes the polygon";
+        continue;
+      }
       EXPECT_LT(outside.Area(), 1e-6 * area) << core::ToString(kind) << " seed " << seed;
       // Dense fan of 20000 rays (walls only): its polygon area converges to the exact one from below-ish.
       const int n = 20000;

@@ -82,7 +82,9 @@ TEST(RayCaster, BearingsAreRelativeToHeadingAndSorted) {
   for (size_t i = 0; i < a.size(); ++i) {
     EXPECT_NEAR(core::WrapAngle(a[i].bearing - core::kPi / 4 - b[i].bearing), 0.0, 1e-12);
     EXPECT_NEAR(a[i].range, core::Norm(a[i].position), 1e-12);
-    if (i > 0) EXPECT_LT(a[i - 1].bearing, a[i].bearing);
+    if (i > 0) {
+      EXPECT_LT(a[i - 1].bearing, a[i].bearing);
+    }
   }
 }
 
@@ -113,13 +115,16 @@ TEST(RayCaster, VisibilityPolygonContainsOnlyFreeSpaceInLabyrinths) {
   const core::World w = GenerateLabyrinth({}, 3);
   const RayCaster rc(w);
   core::Rng rng(1);
-  for (int k = 0; k < 5; ++k) {
-    const core::Ring poly = rc.VisibilityPolygon(w.start.position());
+  for (int k = 0; k < 20;) {
+    const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
+    if (!core::IsFree(w, p, false)) continue;
+    ++k;
+    const core::Ring poly = rc.VisibilityPolygon(p);
     ASSERT_GE(poly.size(), 3u);
     EXPECT_GT(core::SignedArea(poly), 0.0);
-    // Points well inside the polygon (between the agent and polygon vertices) are free space.
+    // Points between the agent and the polygon's vertices are free space.
     for (const auto& v : poly) {
-      const core::Vec2 mid = w.start.position() + (v - w.start.position()) * rng.Uniform(0.05, 0.95);
+      const core::Vec2 mid = p + (v - p) * rng.Uniform(0.05, 0.95);
       EXPECT_TRUE(core::IsFree(w, mid, false)) << mid.x << "," << mid.y;
     }
   }

@@ -68,6 +68,21 @@ TEST(Labyrinth, CorridorsAreHallWidthWide) {
   EXPECT_GT(corridors, 10);
 }
 
+TEST(Labyrinth, NoStraightWallLongerThanTheRunLimit) {
+  // The generator rejects straight runs of more than 11 free cells, so no wall is longer than 11 grown cells.
+  const LabyrinthOptions o;
+  const double s = o.hall_width / (1 + o.inflate_ratio), d = s * o.inflate_ratio / 2;
+  for (uint64_t seed = 0; seed < 20; ++seed) {
+    const core::World w = GenerateLabyrinth(o, seed);
+    for (const auto& wall : core::MapWalls(w))
+      EXPECT_LE(core::Distance(wall.a, wall.b), o.max_straight_run_cells * s + 2 * d + 1e-9) << "seed " << seed;
+    const double area = core::Area(core::FreeSpacePolygon(w));
+    // 4 rooms of 3-4 cells per side plus corridors: between 4 * 9 and 4 * 16 + 60 grown cells.
+    EXPECT_GT(area, 4 * 9 * s * s) << "seed " << seed;
+    EXPECT_LT(area, (4 * 16 + 60) * (s + 2 * d) * (s + 2 * d)) << "seed " << seed;
+  }
+}
+
 TEST(Labyrinth, ClutterHugsWallsInsideFreeSpace) {
   const LabyrinthOptions o;
   const core::World w = GenerateLabyrinth(o, 4);
