@@ -158,6 +158,8 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("wall_skip_damping", &o.wall_skip_damping, 0.0, 1.0);
     r.Read("edge_log_floor", &o.edge_log_floor, -100.0, -1e-6);
     r.Read("mcmc_samples", &o.mcmc_samples, 0, 100000);
+    r.Read("mcmc_window", &o.mcmc_window, 1, 1000000);
+    r.Read("defer_to_mcmc", &o.defer_to_mcmc);
     r.Read("max_range", &o.max_range, 1.0, 1e4);
     r.Read("star_rebuild_tolerance", &o.star_rebuild_tolerance, 0.0, 100.0);
     r.Read("union_block", &o.union_block, 1, 100000);

@@ -276,7 +276,7 @@ int RunMap(MapArgs a) {
     j["map_walls"] = r.map_walls;
     j["false_walls"] = r.false_walls;
     j["frontiers"] = r.view.frontiers.size();
-    j["log_posterior"] = r.view.log_posterior;
+    j["log_posterior"] = r.log_posterior;
     j["mean_update_ms"] = r.mean_update_ms;
     j["mean_mcmc_ms"] = r.mean_mcmc_ms;
     j["wall_time_ms"] = ms;

@@ -31,6 +31,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
 
   mapping::MapperOptions mo = config.mapping;
   mo.world_bounds = world.bounds;
+  if (o.mcmc_every <= 0) mo.defer_to_mcmc = false;  // without MCMC every vertex with enough detections is kept
   mapping::Mapper mapper(mo);
   auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(o.seed, 1));
   core::Rng rng(core::DeriveSeed(o.seed, 2));
@@ -46,6 +47,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
     const core::Pose2 pose = motion.Pose(agent);
     auto t0 = Clock::now();
     mapper.AddObservation(sensor->Observe(pose, agent));
+    mapper.View();  // what a planner would ask for each step
     update_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     if (o.mcmc_every > 0 && (step + 1) % o.mcmc_every == 0) {
       t0 = Clock::now();
@@ -64,6 +66,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
   }
   if (o.mcmc_every > 0) mapper.SampleMostLikelyMap(rng);
   r.view = mapper.View();
+  r.log_posterior = mapper.LogPosterior();
   r.known_space_iou = KnownSpaceIoU(world, r.view);
   const auto truth = core::MapVertices(world);
   const auto true_walls = core::MapWalls(world);

@@ -13,7 +13,7 @@ namespace toponav::experiments {
 
 struct MapDriveOptions {
   std::string path = "tour";   // "tour" (visit the whole free space), "guide" (the guide path), "goal" (start to goal)
-  double tour_spacing = 30.0;  // tour waypoint grid spacing
+  double tour_spacing = 20.0;  // tour waypoint grid spacing
   int max_steps = 3000;        // stop after this many agent steps even if the path goes on
   int mcmc_every = 5;          // run MCMC every this many steps (and once at the end); 0: never
   uint64_t seed = 0;           // sensor and MCMC randomness
@@ -28,7 +28,8 @@ struct MapDriveResult {
   int false_vertices = 0;         // map vertices farther than 'vertex_match_radius' from any true vertex
   int map_walls = 0;
   int false_walls = 0;            // map walls whose midpoint is farther than the radius from every true wall
-  double mean_update_ms = 0.0;    // Mapper::AddObservation
+  double log_posterior = 0.0;     // of the final map
+  double mean_update_ms = 0.0;    // Mapper::AddObservation + View (known space, frontiers)
   double mean_mcmc_ms = 0.0;      // Mapper::SampleMostLikelyMap
 };
 

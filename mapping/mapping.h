@@ -26,8 +26,11 @@ struct MapperOptions {
   double wall_skip_damping = 0.2;         // evidence for detections k apart is scaled by this^(k-1)
   double edge_log_floor = -1.386;         // log 0.25: an edge term never costs more than this
   int mcmc_samples = 50;                  // proposals per SampleMostLikelyMap call (the paper's 50)
+  int mcmc_window = 45;                   // proposals flip vertices seen in this many latest observations
+  bool defer_to_mcmc = true;              // new vertices and walls enter the map only through MCMC; set false
+                                          // to build without MCMC (every vertex with enough detections kept)
   double max_range = 100.0;               // range of hypothetical observations
-  double star_rebuild_tolerance = 0.25;   // rebuild an observation's known space when its vertices move this far
+  double star_rebuild_tolerance = 1.0;    // rebuild an observation's known space when its vertices move this far
   int union_block = 16;                   // observations per cached partial union
   double frontier_wall_tolerance = 0.05;  // known-space boundary this close to a map wall is wall, not frontier
   std::optional<core::Aabb2> world_bounds;  // if set, observations from outside are rejected
@@ -61,7 +64,6 @@ struct MapView {
   std::vector<MapWall> walls;        // walls between map vertices
   std::vector<core::Polygon> known_space;
   std::vector<Frontier> frontiers;
-  double log_posterior = 0.0;
   int num_observations = 0;
   double known_area() const;
 };
@@ -92,7 +94,8 @@ class Mapper {
   // The log posterior of the current map (all observations).
   double LogPosterior() const;
 
-  // The current map with its known space and frontiers (computed incrementally and cached).
+  // The map of the last MCMC call (or the live one without defer_to_mcmc) with its known space and frontiers
+  // (computed incrementally and cached).
   MapView View() const;
 
   // All potential vertices and their inclusion flags (for tests and pictures).

@@ -61,6 +61,7 @@ void MapperOptions::Validate() const {
   if (!(wall_skip_damping >= 0 && wall_skip_damping <= 1)) fail("mapping.wall_skip_damping", wall_skip_damping, "must be in [0, 1]");
   if (!(edge_log_floor < 0)) fail("mapping.edge_log_floor", edge_log_floor, "must be < 0");
   if (mcmc_samples < 0) fail("mapping.mcmc_samples", mcmc_samples, "must be >= 0");
+  if (mcmc_window < 1) fail("mapping.mcmc_window", mcmc_window, "must be >= 1");
   if (!(max_range > 0)) fail("mapping.max_range", max_range, "must be > 0");
   if (!(star_rebuild_tolerance >= 0)) fail("mapping.star_rebuild_tolerance", star_rebuild_tolerance, "must be >= 0");
   if (union_block < 1) fail("mapping.union_block", union_block, "must be >= 1");
@@ -89,8 +90,18 @@ struct Mapper::Impl {
     // Cached conservative known space S_c of this observation, with what it was built from.
     std::vector<int> sc_ids;
     std::vector<Vec2> sc_pos;
+    std::vector<Vec2> sc_star_src;
     PolygonSet sc;
     bool sc_valid = false;
+  };
+
+  // A proposed map: which vertices are in it and its walls (sorted pairs, a < b), with a key set for lookups.
+  struct MapState {
+    std::vector<char> mapped;
+    std::vector<std::pair<int, int>> walls;
+    std::unordered_set<uint64_t> wall_keys;
+    int num_vertices = 0;
+    bool HasWall(int a, int b) const { return wall_keys.count(WallKey(a, b)) > 0; }
   };
 
   MapperOptions o;
@@ -101,12 +112,58 @@ struct Mapper::Impl {
   mutable std::vector<PolygonSet> blocks;
   mutable std::vector<char> block_dirty;
   mutable PolygonSet total;
-  mutable bool total_dirty = true;
+  mutable bool total_valid = false;           // false: rebuild from the blocks on the next update
+  mutable std::vector<Vec2> snap_pos;         // vertex positions and map membership at the last update
+  mutable std::vector<char> snap_mapped;
+  mutable std::vector<std::pair<int, int>> snap_walls;
   mutable std::vector<Frontier> last_frontiers;
   mutable int next_frontier_id = 0;
   MapperStats stats;
+  // The map planners see (and known space is computed against): frozen at each MCMC call when
+  // options.defer_to_mcmc, otherwise the live state.
+  mutable MapState view_map;
+
+  void FreezeViewMap() const { view_map = LiveState(); }
+  const MapState& ViewMap() const {
+    if (!o.defer_to_mcmc) FreezeViewMap();
+    if (view_map.mapped.size() < v.size()) view_map.mapped.resize(v.size(), 0);  // newer vertices: not yet in
+    return view_map;
+  }
 
   bool Mapped(int i) const { return v[size_t(i)].n >= o.min_detections && v[size_t(i)].in_map; }
+
+  MapState LiveState() const {
+    MapState ms;
+    ms.mapped.resize(v.size());
+    for (size_t i = 0; i < v.size(); ++i) ms.num_vertices += ms.mapped[i] = Mapped(int(i));
+    ms.walls = MappedWalls();
+    for (const auto& w : ms.walls) ms.wall_keys.insert(WallKey(w.first, w.second));
+    return ms;
+  }
+
+  // Walls vertex i brings into (or takes out of) a map where it is present, given the other vertices.
+  std::vector<std::pair<int, int>> IncidentWalls(int i, const MapState& ms) const {
+    std::vector<std::pair<int, int>> out;
+    for (int j : neighbours[size_t(i)])
+      if (ms.mapped[size_t(j)] && WallProb(i, j) > o.wall_threshold) out.push_back({std::min(i, j), std::max(i, j)});
+    return out;
+  }
+
+  void SetMapped(int i, bool on, MapState* ms) const {
+    if (bool(ms->mapped[size_t(i)]) == on) return;
+    const auto inc = IncidentWalls(i, *ms);
+    ms->mapped[size_t(i)] = on;
+    ms->num_vertices += on ? 1 : -1;
+    for (const auto& w : inc) {
+      if (on) {
+        ms->walls.insert(std::lower_bound(ms->walls.begin(), ms->walls.end(), w), w);
+        ms->wall_keys.insert(WallKey(w.first, w.second));
+      } else {
+        ms->walls.erase(std::lower_bound(ms->walls.begin(), ms->walls.end(), w));
+        ms->wall_keys.erase(WallKey(w.first, w.second));
+      }
+    }
+  }
   double WallProb(int a, int b) const {
     auto it = walls.find(WallKey(a, b));
     return it == walls.end() ? 0.0 : it->second.sum / (it->second.count + 1);  // shrinks one sighting to 1/2
@@ -196,6 +253,7 @@ struct Mapper::Impl {
         nv.x = zpos[k];
         nv.P = R[k];
         nv.n = 1;
+        nv.in_map = !o.defer_to_mcmc;  // with MCMC, a vertex enters the map when a sample accepts it
         v.push_back(nv);
         neighbours.emplace_back();
         ob.vid[k] = int(v.size()) - 1;
@@ -224,7 +282,6 @@ struct Mapper::Impl {
       blocks.emplace_back();
       block_dirty.push_back(1);
     }
-    total_dirty = true;
   }
 
   // ------------------------------------------------------------ stars, hypothetical observations, posterior
@@ -262,10 +319,10 @@ struct Mapper::Impl {
 
   // The hypothetical observation of observation i (paper Sec. III-B; vertexnav.md §2.6): mapped vertices in
   // range, inside or on the real observation's star polygon, not hidden by a mapped wall; by bearing.
-  std::vector<int> Hypothetical(const Obs& ob, const std::vector<std::pair<int, int>>& mapped_walls) const {
+  std::vector<int> Hypothetical(const Obs& ob, const MapState& ms) const {
     const Vec2 p = ob.pose.position();
     std::vector<std::pair<int, int>> near_walls;
-    for (const auto& w : mapped_walls)
+    for (const auto& w : ms.walls)
       if (BoxHitsSegment(ob.box, Pos(w.first), Pos(w.second), 1e-6)) near_walls.push_back(w);
     std::vector<std::pair<double, int>> h;
     auto consider = [&](int id, bool on_star) {
@@ -279,12 +336,14 @@ struct Mapper::Impl {
       }
       h.push_back({std::atan2(x.y - p.y, x.x - p.x), id});
     };
-    std::unordered_set<int> own(ob.vid.begin(), ob.vid.end());
-    for (int id : own)
-      if (Mapped(id)) consider(id, true);
+    for (size_t k = 0; k < ob.vid.size(); ++k) {
+      const int id = ob.vid[k];
+      if (ms.mapped[size_t(id)] && std::find(ob.vid.begin(), ob.vid.begin() + long(k), id) == ob.vid.begin() + long(k))
+        consider(id, true);
+    }
     if (!ob.star.empty())
       for (size_t id = 0; id < v.size(); ++id)
-        if (Mapped(int(id)) && !own.count(int(id))) consider(int(id), false);
+        if (ms.mapped[id] && std::find(ob.vid.begin(), ob.vid.end(), int(id)) == ob.vid.end()) consider(int(id), false);
     std::sort(h.begin(), h.end());
     std::vector<int> out;
     for (const auto& e : h) out.push_back(e.second);
@@ -293,21 +352,20 @@ struct Mapper::Impl {
 
   // log P(z_i | m): false positives and negatives against the hypothetical observation, a truncated
   // position term for matches, and edge terms along consecutive hypothetical vertices (Sec. III-C).
-  double ObservationLogLikelihood(const Obs& ob, const std::vector<std::pair<int, int>>& mapped_walls) const {
-    const std::vector<int> H = Hypothetical(ob, mapped_walls);
+  double ObservationLogLikelihood(const Obs& ob, const MapState& ms) const {
+    const std::vector<int> H = Hypothetical(ob, ms);
     const double log_fp = std::log(o.false_positive_rate), log_fn = std::log(o.false_negative_rate);
-    std::unordered_map<int, int> slot;
-    for (size_t j = 0; j < H.size(); ++j) slot[H[j]] = int(j);
     std::vector<int> det_of(H.size(), -1);
     int fp = 0, matched = 0;
     double ll = 0.0;
     for (size_t k = 0; k < ob.det.size(); ++k) {
-      auto it = slot.find(ob.vid[k]);
-      if (it == slot.end() || det_of[size_t(it->second)] >= 0) {
+      const auto it = std::find(H.begin(), H.end(), ob.vid[k]);
+      const size_t slot = size_t(it - H.begin());
+      if (it == H.end() || det_of[slot] >= 0) {
         ++fp;
         continue;
       }
-      det_of[size_t(it->second)] = int(k);
+      det_of[slot] = int(k);
       ++matched;
       const Vec2 z = core::DetectionPosition(ob.pose, ob.det[k]);
       const Eigen::Vector2d e(z.x - v[size_t(ob.vid[k])].x.x(), z.y - v[size_t(ob.vid[k])].x.y());
@@ -326,36 +384,43 @@ struct Mapper::Impl {
         const double no_ccw = det_of[j] >= 0 ? core::NoWallCcw(ob.det[size_t(det_of[j])].labels) : 0.5;
         const double no_cw = det_of[l] >= 0 ? core::NoWallCw(ob.det[size_t(det_of[l])].labels) : 0.5;
         const double q = 1.0 - 0.5 * (no_ccw + no_cw);
-        const double a_wall = WallMapped(H[j], H[l]) ? 1.0 : 0.0;
+        const double a_wall = ms.HasWall(H[j], H[l]) ? 1.0 : 0.0;
         ll += std::max(std::log(std::max(1.0 - std::abs(q - a_wall), 1e-300)), floor);
       }
     }
     return ll;
   }
 
-  double LogPrior(const std::vector<std::pair<int, int>>& mapped_walls) const {
-    int nv = 0;
-    for (size_t i = 0; i < v.size(); ++i) nv += Mapped(int(i));
-    return nv * o.vertex_log_prior + double(mapped_walls.size()) * o.wall_log_prior;
+  double LogPrior(const MapState& ms) const {
+    return ms.num_vertices * o.vertex_log_prior + double(ms.walls.size()) * o.wall_log_prior;
   }
 
   double LogPosterior() const {
-    const auto mw = MappedWalls();
-    double lp = LogPrior(mw);
-    for (const auto& ob : obs) lp += ObservationLogLikelihood(ob, mw);
+    const MapState ms = LiveState();
+    double lp = LogPrior(ms);
+    for (const auto& ob : obs) lp += ObservationLogLikelihood(ob, ms);
     return lp;
   }
 
-  // Observations whose likelihood can change when vertex i flips: their star polygon's box meets the vertex
-  // or one of the walls it could carry.
-  std::vector<int> Affected(int i) const {
+  // True if the segment a-b meets the observation's star polygon (inside or crossing its boundary).
+  static bool StarMeets(const Obs& ob, const Vec2& a, const Vec2& b) {
+    if (ob.star.empty() || !BoxHitsSegment(ob.box, a, b, 1e-6)) return false;
+    if (core::Contains(ob.star, a) || core::Contains(ob.star, b)) return true;
+    for (size_t i = 0; i < ob.star.size(); ++i)
+      if (core::SegmentsIntersect({a, b}, {ob.star[i], ob.star[(i + 1) % ob.star.size()]})) return true;
+    return false;
+  }
+
+  // Observations whose likelihood can change when vertex i flips: their star polygon meets the vertex or a
+  // wall it would carry (sight lines and hypothetical vertices all lie inside the star polygon).
+  std::vector<int> Affected(int i, const MapState& ms) const {
     std::vector<int> out;
     const Vec2 x = Pos(i);
+    std::vector<std::pair<int, int>> walls = IncidentWalls(i, ms);
     for (size_t k = 0; k < obs.size(); ++k) {
       const Obs& ob = obs[k];
-      bool hit = BoxHits(ob.box, x, 1e-6);
-      for (size_t m = 0; m < neighbours[size_t(i)].size() && !hit; ++m)
-        hit = BoxHitsSegment(ob.box, x, Pos(neighbours[size_t(i)][m]), 1e-6);
+      bool hit = std::find(ob.vid.begin(), ob.vid.end(), i) != ob.vid.end() || StarMeets(ob, x, x);
+      for (size_t m = 0; m < walls.size() && !hit; ++m) hit = StarMeets(ob, Pos(walls[m].first), Pos(walls[m].second));
       if (hit) out.push_back(int(k));
     }
     return out;
@@ -363,77 +428,125 @@ struct Mapper::Impl {
 
   double Sample(core::Rng& rng) {
     RefreshStars();
+    // Candidates: vertices with enough detections seen in the recent window of observations.
     std::vector<int> cand;
-    for (size_t i = 0; i < v.size(); ++i)
-      if (v[i].n >= o.min_detections) cand.push_back(int(i));
-    auto mw = MappedWalls();
-    std::vector<double> ll(obs.size());
-    double current = LogPrior(mw);
-    for (size_t k = 0; k < obs.size(); ++k) current += ll[k] = ObservationLogLikelihood(obs[k], mw);
+    {
+      std::vector<char> recent(v.size(), 0);
+      const size_t first = obs.size() > size_t(o.mcmc_window) ? obs.size() - size_t(o.mcmc_window) : 0;
+      for (size_t k = first; k < obs.size(); ++k)
+        for (int id : obs[k].vid) recent[size_t(id)] = 1;
+      for (size_t i = 0; i < v.size(); ++i)
+        if (recent[i] && v[i].n >= o.min_detections) cand.push_back(int(i));
+    }
+    MapState ms = LiveState();
+    std::vector<double> ll(obs.size(), std::numeric_limits<double>::quiet_NaN());
     stats.last_mcmc_accepted = 0;
     stats.last_mcmc_evaluated_observations = 0;
-    if (cand.empty()) return current;
-    double best = current;
+    auto cached_ll = [&](int k) {
+      if (std::isnan(ll[size_t(k)])) ll[size_t(k)] = ObservationLogLikelihood(obs[size_t(k)], ms);
+      return ll[size_t(k)];
+    };
     std::vector<char> best_state(v.size());
     for (size_t i = 0; i < v.size(); ++i) best_state[i] = v[i].in_map;
-    for (int s = 0; s < o.mcmc_samples; ++s) {
+    double delta_total = 0, best_delta = 0;  // relative to the starting state
+    for (int s = 0; s < o.mcmc_samples && !cand.empty(); ++s) {
       const int i = cand[size_t(rng.UniformInt(0, int(cand.size()) - 1))];
-      const std::vector<int> affected = Affected(i);
-      const double old_prior = LogPrior(mw);
-      v[size_t(i)].in_map = !v[size_t(i)].in_map;
-      const auto new_mw = MappedWalls();
-      double delta = LogPrior(new_mw) - old_prior;
+      const bool on = !ms.mapped[size_t(i)];
+      const std::vector<int> affected = Affected(i, ms);
+      double delta = -LogPrior(ms);
+      std::vector<double> old_ll(affected.size());
+      for (size_t a = 0; a < affected.size(); ++a) old_ll[a] = cached_ll(affected[a]);
+      SetMapped(i, on, &ms);
+      delta += LogPrior(ms);
       std::vector<double> new_ll(affected.size());
       for (size_t a = 0; a < affected.size(); ++a) {
-        new_ll[a] = ObservationLogLikelihood(obs[size_t(affected[a])], new_mw);
-        delta += new_ll[a] - ll[size_t(affected[a])];
+        new_ll[a] = ObservationLogLikelihood(obs[size_t(affected[a])], ms);
+        delta += new_ll[a] - old_ll[a];
       }
       stats.last_mcmc_evaluated_observations += int(affected.size());
       if (delta >= 0 || std::log(rng.Uniform()) < delta) {  // Metropolis (symmetric proposal)
-        current += delta;
-        mw = new_mw;
+        v[size_t(i)].in_map = on;
+        delta_total += delta;
         for (size_t a = 0; a < affected.size(); ++a) ll[size_t(affected[a])] = new_ll[a];
         ++stats.last_mcmc_accepted;
-        if (current > best) {
-          best = current;
+        if (delta_total > best_delta) {
+          best_delta = delta_total;
           for (size_t k = 0; k < v.size(); ++k) best_state[k] = v[k].in_map;
         }
       } else {
-        v[size_t(i)].in_map = !v[size_t(i)].in_map;
+        SetMapped(i, !on, &ms);
       }
     }
     for (size_t k = 0; k < v.size(); ++k) v[k].in_map = best_state[k];
-    total_dirty = true;
-    return best;
+    FreezeViewMap();
+    return LogPosterior();
   }
 
   // ------------------------------------------------------------ known space and frontiers
 
+  // Known space, incrementally (paper Eq. 2, S_c = union of s(z_i) & s(z_h,i)).  Only observations near
+  // vertices or walls that changed since the last update are re-examined; an S_c that grew (or is new) is
+  // joined into the union directly, and only one that shrank forces the union to be rebuilt from the cached
+  // per-block unions.
   void UpdateKnownSpace() const {
-    const auto mw = MappedWalls();
+    const MapState& ms = ViewMap();
+    const auto& mw = ms.walls;
+    // What changed since the last update: vertices that moved or entered/left the map, walls that did.
+    std::vector<int> changed_vertices;
+    snap_pos.resize(v.size(), Vec2{std::numeric_limits<double>::infinity(), 0});
+    snap_mapped.resize(v.size(), 0);
+    for (size_t i = 0; i < v.size(); ++i) {
+      const bool mapped = ms.mapped[i];
+      if (mapped != bool(snap_mapped[i]) || (mapped && core::Distance(Pos(int(i)), snap_pos[i]) > o.star_rebuild_tolerance)) {
+        changed_vertices.push_back(int(i));
+        snap_mapped[i] = mapped;
+        snap_pos[i] = Pos(int(i));
+      }
+    }
+    std::vector<std::pair<int, int>> changed_walls;
+    std::set_symmetric_difference(mw.begin(), mw.end(), snap_walls.begin(), snap_walls.end(),
+                                  std::back_inserter(changed_walls));
+    snap_walls = mw;
+    bool rebuild = false;
     for (size_t i = 0; i < obs.size(); ++i) {
       Obs& ob = const_cast<Obs&>(obs[i]);
-      const std::vector<int> H = Hypothetical(ob, mw);
+      bool check = !ob.sc_valid || ob.star_src != ob.sc_star_src;
+      for (size_t k = 0; k < changed_vertices.size() && !check; ++k)
+        check = BoxHits(ob.box, Pos(changed_vertices[k]), 1e-6);
+      for (size_t k = 0; k < changed_walls.size() && !check; ++k)
+        check = BoxHitsSegment(ob.box, Pos(changed_walls[k].first), Pos(changed_walls[k].second), 1e-6);
+      if (!check) continue;
+      const std::vector<int> H = Hypothetical(ob, ms);
       std::vector<Vec2> pos;
       for (int id : H) pos.push_back(Pos(id));
-      for (const auto& p : ob.star_src) pos.push_back(p);
-      bool same = ob.sc_valid && ob.sc_ids == H && ob.sc_pos.size() == pos.size();
+      bool same = ob.sc_valid && ob.sc_ids == H && ob.star_src == ob.sc_star_src;
       for (size_t k = 0; same && k < pos.size(); ++k) same = core::Distance(pos[k], ob.sc_pos[k]) <= o.star_rebuild_tolerance;
       if (same) continue;
-      std::vector<Vec2> hyp(pos.begin(), pos.begin() + long(H.size()));
-      const core::Ring sh = StarPolygon(ob.pose.position(), hyp);
-      ob.sc = PolygonSet();
+      const core::Ring sh = StarPolygon(ob.pose.position(), pos);
+      PolygonSet sc;
       if (!sh.empty() && !ob.star.empty()) {
-        ob.sc = PolygonSet::FromRing(ob.star);
-        ob.sc.Intersect(PolygonSet::FromRing(sh));
+        sc = PolygonSet::FromRing(ob.star);
+        sc.Intersect(PolygonSet::FromRing(sh));
       }
+      bool grew = true;  // a new S_c, or one that contains the old one: joining it is enough
+      if (ob.sc_valid && !ob.sc.empty()) {
+        PolygonSet lost = ob.sc;
+        lost.Difference(sc);
+        grew = lost.empty();
+      }
+      if (grew && total_valid) {
+        if (!sc.empty()) total.Join(sc);
+      } else {
+        rebuild = true;
+      }
+      ob.sc = std::move(sc);
       ob.sc_ids = H;
       ob.sc_pos = pos;
+      ob.sc_star_src = ob.star_src;
       ob.sc_valid = true;
       block_dirty[i / size_t(o.union_block)] = 1;
-      total_dirty = true;
     }
-    if (!total_dirty) return;
+    if (!rebuild && total_valid) return;
     std::vector<PolygonSet> parts;
     for (size_t b = 0; b < blocks.size(); ++b) {
       if (block_dirty[b]) {
@@ -446,11 +559,11 @@ struct Mapper::Impl {
       parts.push_back(blocks[b]);
     }
     total = PolygonSet::JoinAll(parts);
-    total_dirty = false;
+    total_valid = true;
   }
 
   std::vector<Frontier> Frontiers(const std::vector<core::Polygon>& known) const {
-    const auto mw = MappedWalls();
+    const auto& mw = ViewMap().walls;
     auto on_wall = [&](const Vec2& a, const Vec2& b) {
       for (const auto& w : mw) {
         const core::Segment2 s{Pos(w.first), Pos(w.second)};
@@ -556,15 +669,15 @@ MapView Mapper::View() const {
   const_cast<Impl&>(m).RefreshStars();
   m.UpdateKnownSpace();
   MapView view;
+  const Impl::MapState& ms = m.ViewMap();
   for (size_t i = 0; i < m.v.size(); ++i) {
     if (m.v[i].n < m.o.min_detections) continue;
     const MapVertex mv{int(i), ToVec(m.v[i].x), FromEigen(m.v[i].P), m.v[i].n};
-    (m.v[i].in_map ? view.vertices : view.rejected).push_back(mv);
+    (ms.mapped[i] ? view.vertices : view.rejected).push_back(mv);
   }
-  for (const auto& [a, b] : m.MappedWalls()) view.walls.push_back({a, b, m.Pos(a), m.Pos(b), m.WallProb(a, b)});
+  for (const auto& [a, b] : ms.walls) view.walls.push_back({a, b, m.Pos(a), m.Pos(b), m.WallProb(a, b)});
   view.known_space = m.total.Polygons();
   view.frontiers = m.Frontiers(view.known_space);
-  view.log_posterior = m.LogPosterior();
   view.num_observations = int(m.obs.size());
   return view;
 }

@@ -1,0 +1,184 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/rng.h"
+#include "mapping/mapping.h"
+#include "tests/testing/worlds.h"
+
+namespace toponav::mapping {
+namespace {
+
+using core::Detection;
+using core::Observation;
+using core::Vec2;
+
+// A detection of world point 'p' seen from 'pose', exact, with the given label and a small covariance.
+Detection Det(const core::Pose2& pose, Vec2 p, core::VertexLabel label, double sr = 0.3, double st = 0.02) {
+  Detection d;
+  d.range = core::Distance(pose.position(), p);
+  d.bearing = core::WrapAngle(std::atan2(p.y - pose.y, p.x - pose.x) - pose.yaw);
+  d.polar = {sr * sr, 0, st * st};
+  d.labels = core::OneHot(label);
+  return d;
+}
+
+Observation Obs(const core::Pose2& pose, std::vector<Detection> dets) {
+  Observation z;
+  z.pose = pose;
+  z.detections = std::move(dets);
+  std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
+  return z;
+}
+
+// The four corners of the square room [0,10]^2 seen from inside: all corners.
+Observation SquareFromInside(const core::Pose2& pose) {
+  std::vector<Detection> d;
+  for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) d.push_back(Det(pose, c, core::VertexLabel::kCorner));
+  return Obs(pose, d);
+}
+
+MapperOptions SquareOptions() {
+  MapperOptions o;
+  o.world_bounds = core::Aabb2{{-1, -1}, {11, 11}};
+  return o;
+}
+
+TEST(Mapper, SquareSeenFromInsideYieldsFourVerticesAndFourWalls) {
+  Mapper m(SquareOptions());
+  core::Rng rng(1);
+  for (int i = 0; i < 30; ++i) m.AddObservation(SquareFromInside({5, 5, 0.1 * i}));
+  m.SampleMostLikelyMap(rng);
+  const MapView view = m.View();
+  EXPECT_EQ(view.vertices.size(), 4u);
+  EXPECT_EQ(view.walls.size(), 4u);
+  EXPECT_EQ(m.PotentialVertices().size(), 4u);
+  EXPECT_NEAR(view.known_area(), 100.0, 1e-6);
+  EXPECT_TRUE(view.frontiers.empty()) << "a closed room has no frontier";
+  EXPECT_LT(m.LogPosterior(), 0.0);
+}
+
+TEST(Mapper, InjectedFalsePositivesAreRejectedAndPosteriorDoesNotDrop) {
+  Mapper m(SquareOptions());
+  core::Rng rng(2);
+  for (int i = 0; i < 30; ++i) {
+    const core::Pose2 pose{5 + 0.05 * i, 5, 0.0};
+    Observation z = SquareFromInside(pose);
+    if (i % 6 == 0) {  // 5 of 30 observations carry a false detection in open space (vertexnav.md §3.3)
+      Detection fp;
+      fp.range = i % 12 == 0 ? 2.0 : 0.5;
+      fp.bearing = 0.0;
+      fp.polar = {1.0, 0, 0.5};
+      z.detections.push_back(fp);
+      std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
+    }
+    m.AddObservation(z);
+  }
+  EXPECT_GT(m.PotentialVertices().size(), 4u);
+  const double before = m.LogPosterior();
+  const double after = m.SampleMostLikelyMap(rng);
+  EXPECT_GE(after, before);
+  EXPECT_LT(after, 0.0);
+  const MapView view = m.View();
+  EXPECT_EQ(view.vertices.size(), 4u);
+  EXPECT_EQ(view.walls.size(), 4u);
+  for (const auto& v : view.vertices) EXPECT_TRUE(std::abs(v.position.x - 5) > 4 && std::abs(v.position.y - 5) > 4);
+}
+
+TEST(Mapper, TwoDetectionsOfOneObservationNeverJoinOneVertex) {
+  Mapper m(SquareOptions());
+  const core::Pose2 pose{0, 0, 0};
+  m.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kPoint, 1.0, 0.1)}));
+  // Both new detections fall inside the gate of the one vertex: only one may join it.
+  m.AddObservation(Obs(pose, {Det(pose, {5, 0.2}, core::VertexLabel::kPoint, 1.0, 0.1),
+                              Det(pose, {5, -0.2}, core::VertexLabel::kPoint, 1.0, 0.1)}));
+  const auto vs = m.PotentialVertices();
+  ASSERT_EQ(vs.size(), 2u);
+  EXPECT_EQ(vs[0].num_detections + vs[1].num_detections, 3);
+}
+
+TEST(Mapper, KalmanCovarianceShrinksWithRepeatedSightings) {
+  Mapper m(SquareOptions());
+  double last = 1e9;
+  for (int i = 0; i < 10; ++i) {
+    const core::Pose2 pose{2.0 + 0.3 * i, 1.0, 0.0};
+    m.AddObservation(Obs(pose, {Det(pose, {9, 9}, core::VertexLabel::kCorner, 0.5, 0.05)}));
+    const auto vs = m.PotentialVertices();
+    ASSERT_EQ(vs.size(), 1u);
+    const double trace = vs[0].covariance.xx + vs[0].covariance.yy;
+    EXPECT_LT(trace, last);
+    last = trace;
+  }
+}
+
+TEST(Mapper, DistantDetectionStartsANewVertex) {
+  Mapper m(SquareOptions());
+  const core::Pose2 pose{0, 0, 0};
+  m.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kPoint)}));
+  m.AddObservation(Obs(pose, {Det(pose, {5, 3}, core::VertexLabel::kPoint)}));  // far outside a 0.3/0.02 gate
+  EXPECT_EQ(m.PotentialVertices().size(), 2u);
+}
+
+TEST(Mapper, BadInputIsRejectedAndLeavesTheMapUnchanged) {
+  Mapper m(SquareOptions());
+  const core::Pose2 pose{5, 5, 0};
+  m.AddObservation(SquareFromInside(pose));
+  const size_t before = m.PotentialVertices().size();
+  Observation nan_range = SquareFromInside(pose);
+  nan_range.detections[1].range = std::nan("");
+  Observation bad_cov = SquareFromInside(pose);
+  bad_cov.detections[2].polar = {1.0, 2.0, 1.0};  // determinant < 0
+  Observation outside = SquareFromInside({50, 5, 0});
+  for (const Observation& z : {nan_range, bad_cov, outside}) {
+    EXPECT_THROW(m.AddObservation(z), core::DataError);
+    EXPECT_EQ(m.PotentialVertices().size(), before);
+  }
+  EXPECT_EQ(m.View().num_observations, 1);
+}
+
+TEST(StarPolygon, InsertsTheCentreAcrossWideGapsAndDropsHiddenPoints) {
+  EXPECT_TRUE(StarPolygon({0, 0}, {{1, 0}}).empty());
+  const core::Ring fan = StarPolygon({0, 0}, {{1, 0}, {0, 1}});  // 90 degrees apart: the centre closes it
+  ASSERT_EQ(fan.size(), 3u);
+  EXPECT_NEAR(core::SignedArea(fan), 0.5, 1e-12);
+  const core::Ring square = StarPolygon({0, 0}, {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}, {2, 2}});  // (2,2) is behind (1,1)
+  EXPECT_EQ(square.size(), 4u);
+  EXPECT_NEAR(core::SignedArea(square), 4.0, 1e-12);
+}
+
+TEST(SolveAssignment, FindsTheMinimumCostOneToOneAssignment) {
+  const std::vector<std::vector<double>> cost{{4, 1, 3}, {2, 0, 5}, {3, 2, 2}};
+  const auto col = SolveAssignment(cost);
+  EXPECT_EQ(col, (std::vector<int>{1, 0, 2}));
+  const auto rect = SolveAssignment({{5, 1, 9, 9}, {1, 9, 9, 9}});
+  EXPECT_EQ(rect, (std::vector<int>{1, 0}));
+}
+
+TEST(DetectionCovariance, EigenvaluesAreRangeAndCrossRangeVariances) {
+  Detection d;
+  d.range = 7.0;
+  d.bearing = 0.6;
+  d.polar = {0.25, 0.0, 0.01};
+  const core::Cov2 c = core::DetectionCovariance({1, 2, 0.3}, d);
+  Eigen::Matrix2d m;
+  m << c.xx, c.xy, c.xy, c.yy;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(m);
+  EXPECT_NEAR(es.eigenvalues()(0), 0.25, 1e-12);
+  EXPECT_NEAR(es.eigenvalues()(1), 49 * 0.01, 1e-12);
+}
+
+TEST(MapperOptions, ValidateNamesTheKey) {
+  MapperOptions o;
+  o.false_positive_rate = 1.5;
+  try {
+    o.Validate();
+    FAIL();
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(e.key(), "mapping.false_positive_rate");
+  }
+}
+
+}  // namespace
+}  // namespace toponav::mapping
