@@ -22,7 +22,7 @@ double KnownSpaceIoU(const core::World& world, const mapping::MapView& map) {
 MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& o) {
   using Clock = std::chrono::steady_clock;
   std::vector<core::Vec2> path;
-  const double clearance = std::max(3.0, 3 * config.motion.agent_radius);
+  const double clearance = config.motion.agent_radius + 1.0;  // room to pass clutter
   if (o.path == "guide") path = world.guide_path;
   else if (o.path == "goal") path = sim::FreePath(world, world.start.position(), world.goal, clearance);
   else if (o.path == "tour") path = sim::CoverageTour(world, world.start.position(), o.tour_spacing, clearance);

@@ -30,7 +30,7 @@ struct MapperOptions {
   bool defer_to_mcmc = true;              // new vertices and walls enter the map only through MCMC; set false
                                           // to build without MCMC (every vertex with enough detections kept)
   double max_range = 100.0;               // range of hypothetical observations
-  double star_rebuild_tolerance = 1.0;    // rebuild an observation's known space when its vertices move this far
+  double star_rebuild_tolerance = 1.0;    // recompute known space around a map vertex once it drifted this far
   int union_block = 16;                   // observations per cached partial union
   double frontier_wall_tolerance = 0.05;  // known-space boundary this close to a map wall is wall, not frontier
   std::optional<core::Aabb2> world_bounds;  // if set, observations from outside are rejected
@@ -87,8 +87,9 @@ class Mapper {
   // that is not positive definite, or a pose outside options.world_bounds.
   void AddObservation(const core::Observation& observation);
 
-  // MCMC over vertex inclusion (options.mcmc_samples proposals, uniform random vertex flips, Metropolis
-  // acceptance); leaves the map at the most likely state seen and returns its log posterior.
+  // MCMC over vertex inclusion: options.mcmc_samples single-vertex flips of the recently seen candidates
+  // (random-order systematic scan), Metropolis acceptance; leaves the map at the most likely state seen and
+  // returns its log posterior.
   double SampleMostLikelyMap(core::Rng& rng);
 
   // The log posterior of the current map (all observations).

@@ -89,8 +89,6 @@ struct Mapper::Impl {
     std::vector<Vec2> star_src;
     // Cached conservative known space S_c of this observation, with what it was built from.
     std::vector<int> sc_ids;
-    std::vector<Vec2> sc_pos;
-    std::vector<Vec2> sc_star_src;
     PolygonSet sc;
     bool sc_valid = false;
   };
@@ -113,8 +111,8 @@ struct Mapper::Impl {
   mutable std::vector<char> block_dirty;
   mutable PolygonSet total;
   mutable bool total_valid = false;           // false: rebuild from the blocks on the next update
-  mutable std::vector<Vec2> snap_pos;         // vertex positions and map membership at the last update
-  mutable std::vector<char> snap_mapped;
+  mutable std::vector<char> snap_mapped;      // map membership at the last update
+  mutable std::vector<Vec2> drift_ref;        // where each vertex was when its drift was last flagged
   mutable std::vector<std::pair<int, int>> snap_walls;
   mutable std::vector<Frontier> last_frontiers;
   mutable int next_frontier_id = 0;
@@ -449,8 +447,16 @@ struct Mapper::Impl {
     std::vector<char> best_state(v.size());
     for (size_t i = 0; i < v.size(); ++i) best_state[i] = v[i].in_map;
     double delta_total = 0, best_delta = 0;  // relative to the starting state
+    // Random-order systematic scan: every candidate is proposed once per pass (in a fresh random order), so a
+    // vertex that just gathered enough detections is considered at the next call, whatever the window size.
+    std::vector<int> order;
     for (int s = 0; s < o.mcmc_samples && !cand.empty(); ++s) {
-      const int i = cand[size_t(rng.UniformInt(0, int(cand.size()) - 1))];
+      if (order.empty()) {
+        order = cand;
+        rng.Shuffle(order);
+      }
+      const int i = order.back();
+      order.pop_back();
       const bool on = !ms.mapped[size_t(i)];
       const std::vector<int> affected = Affected(i, ms);
       double delta = -LogPrior(ms);
@@ -484,23 +490,25 @@ struct Mapper::Impl {
 
   // ------------------------------------------------------------ known space and frontiers
 
-  // Known space, incrementally (paper Eq. 2, S_c = union of s(z_i) & s(z_h,i)).  Only observations near
-  // vertices or walls that changed since the last update are re-examined; an S_c that grew (or is new) is
-  // joined into the union directly, and only one that shrank forces the union to be rebuilt from the cached
-  // per-block unions.
+  // Known space, incrementally (paper Eq. 2, S_c = union of s(z_i) & s(z_h,i)).  An observation's S_c is
+  // recomputed only when its hypothetical observation changes (vertices or walls entering or leaving the map,
+  // which happens at MCMC calls), not when its vertices drift by Kalman updates; so steps between MCMC
+  // calls only add the new observation's S_c.  An S_c that grew (or is new) is joined into the union
+  // directly; one that shrank forces the union to be rebuilt from the cached per-block unions.
   void UpdateKnownSpace() const {
     const MapState& ms = ViewMap();
     const auto& mw = ms.walls;
-    // What changed since the last update: vertices that moved or entered/left the map, walls that did.
+    // What changed since the last update: vertices that entered or left the map or drifted farther than the
+    // tolerance since they were last flagged, and walls that entered or left the map.
     std::vector<int> changed_vertices;
-    snap_pos.resize(v.size(), Vec2{std::numeric_limits<double>::infinity(), 0});
     snap_mapped.resize(v.size(), 0);
+    drift_ref.resize(v.size(), Vec2{std::numeric_limits<double>::quiet_NaN(), 0});
     for (size_t i = 0; i < v.size(); ++i) {
-      const bool mapped = ms.mapped[i];
-      if (mapped != bool(snap_mapped[i]) || (mapped && core::Distance(Pos(int(i)), snap_pos[i]) > o.star_rebuild_tolerance)) {
+      const bool drifted = std::isnan(drift_ref[i].x) || core::Distance(drift_ref[i], Pos(int(i))) > o.star_rebuild_tolerance;
+      if (drifted) drift_ref[i] = Pos(int(i));
+      if (bool(ms.mapped[i]) != bool(snap_mapped[i]) || (drifted && ms.mapped[i])) {
         changed_vertices.push_back(int(i));
-        snap_mapped[i] = mapped;
-        snap_pos[i] = Pos(int(i));
+        snap_mapped[i] = ms.mapped[i];
       }
     }
     std::vector<std::pair<int, int>> changed_walls;
@@ -510,22 +518,23 @@ struct Mapper::Impl {
     bool rebuild = false;
     for (size_t i = 0; i < obs.size(); ++i) {
       Obs& ob = const_cast<Obs&>(obs[i]);
-      bool check = !ob.sc_valid || ob.star_src != ob.sc_star_src;
+      bool check = !ob.sc_valid;
       for (size_t k = 0; k < changed_vertices.size() && !check; ++k)
         check = BoxHits(ob.box, Pos(changed_vertices[k]), 1e-6);
       for (size_t k = 0; k < changed_walls.size() && !check; ++k)
         check = BoxHitsSegment(ob.box, Pos(changed_walls[k].first), Pos(changed_walls[k].second), 1e-6);
       if (!check) continue;
       const std::vector<int> H = Hypothetical(ob, ms);
-      std::vector<Vec2> pos;
-      for (int id : H) pos.push_back(Pos(id));
-      bool same = ob.sc_valid && ob.sc_ids == H && ob.star_src == ob.sc_star_src;
-      for (size_t k = 0; same && k < pos.size(); ++k) same = core::Distance(pos[k], ob.sc_pos[k]) <= o.star_rebuild_tolerance;
-      if (same) continue;
-      const core::Ring sh = StarPolygon(ob.pose.position(), pos);
+      bool moved = false;  // a vertex of this S_c got a new known-space position
+      for (int id : ob.sc_ids) moved = moved || std::find(changed_vertices.begin(), changed_vertices.end(), id) != changed_vertices.end();
+      if (ob.sc_valid && ob.sc_ids == H && !moved) continue;
+      std::vector<Vec2> hyp, real;
+      for (int id : H) hyp.push_back(Pos(id));
+      for (int id : ob.vid) real.push_back(Pos(id));
+      const core::Ring sh = StarPolygon(ob.pose.position(), hyp), sz = StarPolygon(ob.pose.position(), real);
       PolygonSet sc;
-      if (!sh.empty() && !ob.star.empty()) {
-        sc = PolygonSet::FromRing(ob.star);
+      if (!sh.empty() && !sz.empty()) {
+        sc = PolygonSet::FromRing(sz);
         sc.Intersect(PolygonSet::FromRing(sh));
       }
       bool grew = true;  // a new S_c, or one that contains the old one: joining it is enough
@@ -541,8 +550,6 @@ struct Mapper::Impl {
       }
       ob.sc = std::move(sc);
       ob.sc_ids = H;
-      ob.sc_pos = pos;
-      ob.sc_star_src = ob.star_src;
       ob.sc_valid = true;
       block_dirty[i / size_t(o.union_block)] = 1;
     }
