@@ -182,3 +182,53 @@ TEST(MapperOptions, ValidateNamesTheKey) {
 
 }  // namespace
 }  // namespace toponav::mapping
+
+namespace toponav::mapping {
+namespace {
+
+TEST(Mapper, ObservationsOfSeveralAgentsBuildOneMap) {
+  Mapper m(SquareOptions());
+  core::Rng rng(4);
+  for (int i = 0; i < 20; ++i) {
+    Observation a = SquareFromInside({3, 3 + 0.1 * i, 0.0});
+    Observation b = SquareFromInside({7, 7 - 0.1 * i, 2.0});
+    a.agent = 0;
+    b.agent = 1;
+    m.AddObservation(a);
+    m.AddObservation(b);
+  }
+  m.SampleMostLikelyMap(rng);
+  EXPECT_EQ(m.View().vertices.size(), 4u);
+  EXPECT_EQ(m.PotentialVertices().size(), 4u) << "both agents' detections of a corner join one vertex";
+}
+
+// A room [0,10]^2 whose east wall is missing between (10,0) and (10,10) as far as the sensor can tell:
+// the corners at x = 10 are seen as gaps, so the east side of known space is a frontier.
+Observation RoomWithOpening(const core::Pose2& pose) {
+  std::vector<Detection> d;
+  d.push_back(Det(pose, {0, 0}, core::VertexLabel::kCorner));
+  d.push_back(Det(pose, {10, 0}, core::VertexLabel::kLeftGap));    // wall only on its clockwise side, to (0,0)
+  d.push_back(Det(pose, {10, 10}, core::VertexLabel::kRightGap));  // wall only counter-clockwise, to (0,10)
+  d.push_back(Det(pose, {0, 10}, core::VertexLabel::kCorner));
+  return Obs(pose, d);
+}
+
+TEST(Mapper, FrontierAcrossAnOpeningKeepsItsId) {
+  Mapper m(SquareOptions());
+  core::Rng rng(5);
+  for (int i = 0; i < 10; ++i) m.AddObservation(RoomWithOpening({4, 5, 0}));
+  m.SampleMostLikelyMap(rng);
+  const MapView first = m.View();
+  EXPECT_EQ(first.walls.size(), 3u);
+  ASSERT_EQ(first.frontiers.size(), 1u);
+  EXPECT_NEAR(first.frontiers[0].midpoint.x, 10.0, 1e-6);
+  EXPECT_NEAR(first.frontiers[0].length, 10.0, 1e-6);
+  for (int i = 0; i < 5; ++i) m.AddObservation(RoomWithOpening({4.2, 5, 0}));
+  m.SampleMostLikelyMap(rng);
+  const MapView second = m.View();
+  ASSERT_EQ(second.frontiers.size(), 1u);
+  EXPECT_EQ(second.frontiers[0].id, first.frontiers[0].id);
+}
+
+}  // namespace
+}  // namespace toponav::mapping
