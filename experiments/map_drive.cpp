@@ -69,19 +69,37 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
   r.log_posterior = mapper.LogPosterior();
   r.known_space_iou = KnownSpaceIoU(world, r.view);
   const auto truth = core::MapVertices(world);
-  const auto true_walls = core::MapWalls(world);
   r.map_vertices = int(r.view.vertices.size());
   for (const auto& v : r.view.vertices) {
     double best = std::numeric_limits<double>::infinity();
     for (const auto& t : truth) best = std::min(best, core::Distance(v.position, t));
     r.false_vertices += best > kVertexMatchRadius;
   }
+  // A map wall is true when its ends match (within the radius) the two ends of one true wall.
+  const auto rings = core::MapRings(world);
+  auto nearest_ref = [&](const core::Vec2& p, core::VertexRef* ref) {
+    double best = kVertexMatchRadius;
+    bool found = false;
+    for (size_t rr = 0; rr < rings.size(); ++rr)
+      for (size_t i = 0; i < rings[rr]->size(); ++i) {
+        const double d = core::Distance(p, (*rings[rr])[i]);
+        if (d <= best) {
+          best = d;
+          *ref = {int(rr), int(i)};
+          found = true;
+        }
+      }
+    return found;
+  };
   r.map_walls = int(r.view.walls.size());
   for (const auto& w : r.view.walls) {
-    const core::Vec2 mid = (w.pa + w.pb) * 0.5;
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& t : true_walls) best = std::min(best, core::DistanceToSegment(mid, t));
-    r.false_walls += best > kVertexMatchRadius;
+    core::VertexRef a, b;
+    bool ok = nearest_ref(w.pa, &a) && nearest_ref(w.pb, &b) && a.ring == b.ring;
+    if (ok) {
+      const int n = int(rings[size_t(a.ring)]->size());
+      ok = (a.index + 1) % n == b.index || (b.index + 1) % n == a.index;
+    }
+    r.false_walls += !ok;
   }
   r.mean_update_ms = r.steps > 0 ? update_ms / r.steps : 0.0;
   r.mean_mcmc_ms = mcmc_calls > 0 ? mcmc_ms / mcmc_calls : 0.0;

@@ -27,7 +27,7 @@ struct MapDriveResult {
   int map_vertices = 0;
   int false_vertices = 0;         // map vertices farther than 'vertex_match_radius' from any true vertex
   int map_walls = 0;
-  int false_walls = 0;            // map walls whose midpoint is farther than the radius from every true wall
+  int false_walls = 0;            // map walls whose ends are not (within the radius) the ends of one true wall
   double log_posterior = 0.0;     // of the final map
   double mean_update_ms = 0.0;    // Mapper::AddObservation + View (known space, frontiers)
   double mean_mcmc_ms = 0.0;      // Mapper::SampleMostLikelyMap

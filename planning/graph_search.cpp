@@ -4,7 +4,7 @@
 #include <queue>
 
 #include "core/error.h"
-#include "planning/planning.h"
+#include "planning/graph.h"
 
 namespace toponav::planning {
 

@@ -1,0 +1,252 @@
+#include "planning/navigation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/error.h"
+
+namespace toponav::planning {
+
+using core::Vec2;
+
+void PlannerOptions::Validate() const {
+  auto fail = [](const char* key, double v, const char* why) {
+    throw core::ConfigError("<options>", key, std::to_string(v), why);
+  };
+  if (!(inflation_radius > 0)) fail("planning.inflation_radius", inflation_radius, "must be > 0");
+  if (!(clearance >= 0 && clearance < inflation_radius)) fail("planning.clearance", clearance, "must be in [0, inflation_radius)");
+  if (!(frontier_min_length >= 0)) fail("planning.frontier_min_length", frontier_min_length, "must be >= 0");
+  if (!(frontier_setback > 0)) fail("planning.frontier_setback", frontier_setback, "must be > 0");
+  if (!(known_space_step > 0)) fail("planning.known_space_step", known_space_step, "must be > 0");
+}
+
+namespace {
+
+bool InKnown(const mapping::MapView& view, const Vec2& p) {
+  for (const auto& poly : view.known_space)
+    if (core::Contains(poly, p)) return true;
+  return false;
+}
+
+}  // namespace
+
+VisibilityGraph::VisibilityGraph(const mapping::MapView& view, const PlannerOptions& options, bool require_known)
+    : view_(&view), options_(options), require_known_(require_known) {
+  options.Validate();
+  for (const auto& w : view.walls) walls_.push_back({w.pa, w.pb});
+  // Nodes around each map vertex, inflation_radius away: one per free angular sector between its walls (on
+  // the bisector; wide sectors get one node per 60 degrees), six around a vertex without walls.
+  std::map<int, std::vector<double>> wall_dirs;
+  std::map<int, Vec2> pos;
+  for (const auto& v : view.vertices) pos[v.id] = v.position;
+  for (const auto& w : view.walls) {
+    wall_dirs[w.a].push_back(std::atan2(w.pb.y - w.pa.y, w.pb.x - w.pa.x));
+    wall_dirs[w.b].push_back(std::atan2(w.pa.y - w.pb.y, w.pa.x - w.pb.x));
+  }
+  const double r = options.inflation_radius;
+  for (const auto& v : view.vertices) {
+    std::vector<double> dirs = wall_dirs[v.id];
+    std::sort(dirs.begin(), dirs.end());
+    std::vector<double> angles;
+    if (dirs.empty()) {
+      for (int k = 0; k < 6; ++k) angles.push_back(2 * core::kPi * k / 6);
+    } else {
+      for (size_t k = 0; k < dirs.size(); ++k) {
+        const double from = dirs[k];
+        double span = (k + 1 < dirs.size() ? dirs[k + 1] : dirs[0] + 2 * core::kPi) - from;
+        if (span <= 1e-9) continue;
+        const int count = std::max(1, int(std::ceil(span / (core::kPi / 3) - 1e-9)) - 1);
+        for (int j = 0; j < count; ++j) angles.push_back(from + span * (j + 1) / (count + 1));
+      }
+    }
+    for (double a : angles) {
+      const Vec2 p = v.position + Vec2{r * std::cos(a), r * std::sin(a)};
+      bool ok = true;
+      for (const auto& w : walls_) ok = ok && core::DistanceToSegment(p, w) >= 0.9 * r - 1e-9;
+      if (ok && require_known_) ok = InKnown(view, p);
+      if (ok) nodes_.push_back(p);
+    }
+  }
+  // Exploration also needs to turn at corners of known space that are not map vertices (where it meets
+  // unknown space): a node inside each such corner, on the inward bisector.
+  if (require_known_) {
+    auto add_corners = [&](const core::Ring& ring, bool outer) {
+      const size_t n = ring.size();
+      for (size_t i = 0; i < n; ++i) {
+        const Vec2 prev = ring[(i + n - 1) % n], cur = ring[i], next = ring[(i + 1) % n];
+        const double la = core::Distance(prev, cur), lb = core::Distance(cur, next);
+        if (la < 1e-9 || lb < 1e-9) continue;
+        const Vec2 a = (prev - cur) / la, b = (next - cur) / lb;
+        Vec2 bis = a + b;
+        if (core::Norm(bis) < 1e-9) continue;  // straight: no corner
+        bis = bis / core::Norm(bis);
+        // Outer rings are counter-clockwise, so the interior is left of cur->next; flip if the bisector is not.
+        const bool left = core::Cross(b, bis) > 0;
+        if (left != outer) bis = bis * -1.0;
+        const Vec2 p = cur + bis * r;
+        bool ok = InKnown(view, p);
+        for (const auto& w : walls_) ok = ok && core::DistanceToSegment(p, w) >= 0.9 * r - 1e-9;
+        if (ok) nodes_.push_back(p);
+      }
+    };
+    for (const auto& poly : view.known_space) {
+      add_corners(poly.outer, true);
+      for (const auto& h : poly.holes) add_corners(h, false);
+    }
+  }
+  graph_ = Graph(int(nodes_.size()));
+  for (size_t i = 0; i < nodes_.size(); ++i)
+    for (size_t j = i + 1; j < nodes_.size(); ++j)
+      if (Clear(nodes_[i], nodes_[j])) graph_.AddEdge(int(i), int(j), core::Distance(nodes_[i], nodes_[j]));
+}
+
+int VisibilityGraph::num_edges() const {
+  size_t n = 0;
+  for (const auto& a : graph_.adjacency) n += a.size();
+  return int(n / 2);
+}
+
+bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b) const {
+  const core::Segment2 s{a, b};
+  for (const auto& w : walls_)
+    if (core::SegmentDistance(s, w) < options_.clearance) return false;
+  if (require_known_) {
+    const double len = core::Distance(a, b);
+    const int steps = std::max(1, int(std::ceil(len / options_.known_space_step)));
+    for (int k = 1; k < steps; ++k)
+      if (!InKnown(*view_, a + (b - a) * (double(k) / steps))) return false;
+  }
+  return true;
+}
+
+std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vector<Vec2>& goals) const {
+  // Query graph: the built graph plus the start and the goals.
+  Graph g = graph_;
+  const int n = int(nodes_.size());
+  const int s = n;
+  g.adjacency.resize(size_t(n + 1 + int(goals.size())));
+  std::vector<Vec2> pts = nodes_;
+  pts.push_back(start);
+  pts.insert(pts.end(), goals.begin(), goals.end());
+  for (int i = 0; i < n; ++i)
+    if (Clear(start, pts[size_t(i)])) g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
+  for (size_t k = 0; k < goals.size(); ++k) {
+    const int gi = n + 1 + int(k);
+    for (int i = 0; i <= n; ++i)
+      if (Clear(goals[k], pts[size_t(i)])) g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
+  }
+  std::vector<Path> out(goals.size());
+  for (size_t k = 0; k < goals.size(); ++k) {
+    const GraphPath gp = ShortestPath(g, s, n + 1 + int(k));
+    if (!gp) continue;
+    out[k].status = PlanStatus::kFound;
+    out[k].cost = gp.cost;
+    for (int id : gp.nodes) out[k].points.push_back(pts[size_t(id)]);
+  }
+  return out;
+}
+
+Path VisibilityGraph::Plan(const Vec2& start, const Vec2& goal) const { return PlanToMany(start, {goal})[0]; }
+
+std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options) {
+  std::vector<FrontierTarget> out;
+  for (const auto& f : view.frontiers) {
+    if (f.length < options.frontier_min_length || f.points.size() < 2) continue;
+    // The frontier segment under the midpoint, and the side of it that is known space.
+    double best = std::numeric_limits<double>::infinity();
+    Vec2 dir{1, 0};
+    for (size_t i = 1; i < f.points.size(); ++i) {
+      const double d = core::DistanceToSegment(f.midpoint, {f.points[i - 1], f.points[i]});
+      if (d < best && core::Distance(f.points[i - 1], f.points[i]) > 1e-9) {
+        best = d;
+        dir = (f.points[i] - f.points[i - 1]) / core::Distance(f.points[i - 1], f.points[i]);
+      }
+    }
+    for (const double side : {1.0, -1.0}) {
+      const Vec2 p = f.midpoint + Vec2{-dir.y, dir.x} * (side * options.frontier_setback);
+      if (InKnown(view, p)) {
+        out.push_back({f.id, p, f.length});
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
+                                     const Vec2& agent) {
+  FrontierChoice choice;
+  if (targets.empty()) return choice;
+  std::vector<Vec2> goals;
+  for (const auto& t : targets) goals.push_back(t.point);
+  const std::vector<Path> paths = graph.PlanToMany(agent, goals);
+  choice.status = PlanStatus::kNoPath;
+  for (size_t k = 0; k < paths.size(); ++k)
+    if (paths[k] && (choice.status != PlanStatus::kFound || paths[k].cost < choice.path.cost)) {
+      choice.status = PlanStatus::kFound;
+      choice.frontier_id = targets[k].frontier_id;
+      choice.path = paths[k];
+    }
+  return choice;
+}
+
+std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
+                                            const std::vector<Vec2>& agents) {
+  std::vector<FrontierChoice> out(agents.size());
+  if (targets.empty() || agents.empty()) return out;
+  std::vector<Vec2> goals;
+  for (const auto& t : targets) goals.push_back(t.point);
+  std::vector<std::vector<Path>> paths;
+  for (const auto& a : agents) paths.push_back(graph.PlanToMany(a, goals));
+  const double kUnreachable = 1e9;
+  auto cost = [&](size_t a, size_t t) { return paths[a][t] ? paths[a][t].cost : kUnreachable; };
+  auto take = [&](size_t a, size_t t) {
+    if (!paths[a][t]) {
+      out[a].status = PlanStatus::kNoPath;
+      return;
+    }
+    out[a].status = PlanStatus::kFound;
+    out[a].frontier_id = targets[t].frontier_id;
+    out[a].path = paths[a][t];
+  };
+  if (targets.size() >= agents.size()) {
+    std::vector<std::vector<double>> c(agents.size(), std::vector<double>(targets.size()));
+    for (size_t a = 0; a < agents.size(); ++a)
+      for (size_t t = 0; t < targets.size(); ++t) c[a][t] = cost(a, t);
+    const std::vector<int> col = mapping::SolveAssignment(c);
+    for (size_t a = 0; a < agents.size(); ++a) take(a, size_t(col[a]));
+  } else {
+    // Fewer frontiers than agents: each frontier gets its cheapest distinct agent, the rest their nearest.
+    std::vector<std::vector<double>> c(targets.size(), std::vector<double>(agents.size()));
+    for (size_t t = 0; t < targets.size(); ++t)
+      for (size_t a = 0; a < agents.size(); ++a) c[t][a] = cost(a, t);
+    const std::vector<int> agent_of = mapping::SolveAssignment(c);
+    std::vector<char> assigned(agents.size(), 0);
+    for (size_t t = 0; t < targets.size(); ++t) {
+      take(size_t(agent_of[t]), t);
+      assigned[size_t(agent_of[t])] = 1;
+    }
+    for (size_t a = 0; a < agents.size(); ++a) {
+      if (assigned[a]) continue;
+      size_t best = 0;
+      for (size_t t = 1; t < targets.size(); ++t)
+        if (cost(a, t) < cost(a, best)) best = t;
+      take(a, best);
+    }
+  }
+  return out;
+}
+
+std::vector<double> HSignature(const std::vector<Vec2>& path, const std::vector<Vec2>& obstacle_points) {
+  std::vector<double> h(obstacle_points.size(), 0.0);
+  for (size_t k = 0; k < obstacle_points.size(); ++k)
+    for (size_t i = 1; i < path.size(); ++i) {
+      const Vec2 a = path[i - 1] - obstacle_points[k], b = path[i] - obstacle_points[k];
+      h[k] += std::atan2(core::Cross(a, b), core::Dot(a, b));
+    }
+  return h;
+}
+
+}  // namespace toponav::planning

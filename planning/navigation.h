@@ -1,0 +1,85 @@
+#pragma once
+// Planning on the map view: a visibility graph over inflated map vertices, frontier targets, single-agent
+// nearest-frontier search, a multi-agent assignment of distinct frontiers, and H-signatures (homology
+// classes of paths).  Planners read mapping::MapView only.
+#include <vector>
+
+#include "core/geometry.h"
+#include "mapping/mapping.h"
+#include "planning/graph.h"
+
+namespace toponav::planning {
+
+struct PlannerOptions {
+  double inflation_radius = 4.8;   // graph nodes sit this far from map vertices (0.8 * the reference's rho = 6)
+  double clearance = 1.5;          // graph edges keep at least this distance from map walls
+  double frontier_min_length = 3.0;  // shorter frontiers are ignored
+  double frontier_setback = 2.0;   // a frontier target is this far inside known space from its midpoint
+  double known_space_step = 2.0;   // edges are checked to stay in known space at this spacing
+  void Validate() const;           // throws core::ConfigError ("planning.inflation_radius", ...)
+};
+
+struct Path {
+  PlanStatus status = PlanStatus::kNoPath;
+  std::vector<core::Vec2> points;  // start ... goal when found
+  double cost = 0.0;
+  explicit operator bool() const { return status == PlanStatus::kFound; }
+};
+
+// A visibility graph over one map view.  Build once per map change, query many times.
+class VisibilityGraph {
+ public:
+  // 'require_known': edges must stay inside the view's known space (exploration); otherwise unknown space
+  // counts as free (optimistic planning).
+  VisibilityGraph(const mapping::MapView& view, const PlannerOptions& options, bool require_known);
+
+  // Shortest path from 'start' to 'goal' (both added to the graph for this query).
+  Path Plan(const core::Vec2& start, const core::Vec2& goal) const;
+  // Shortest costs from 'start' to each of 'goals' (infinity where unreachable), and the paths.
+  std::vector<Path> PlanToMany(const core::Vec2& start, const std::vector<core::Vec2>& goals) const;
+
+  int num_nodes() const { return int(nodes_.size()); }
+  int num_edges() const;
+  const std::vector<core::Vec2>& nodes() const { return nodes_; }
+  // True if the straight segment is traversable under this graph's rules.
+  bool Clear(const core::Vec2& a, const core::Vec2& b) const;
+
+ private:
+  const mapping::MapView* view_;
+  PlannerOptions options_;
+  bool require_known_;
+  std::vector<core::Segment2> walls_;
+  std::vector<core::Vec2> nodes_;
+  Graph graph_;
+};
+
+// Where an agent goes to explore a frontier: a point 'frontier_setback' inside known space from its midpoint.
+struct FrontierTarget {
+  int frontier_id = 0;
+  core::Vec2 point;
+  double length = 0.0;
+};
+std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options);
+
+// One agent's choice: the frontier it heads for and the path there.
+struct FrontierChoice {
+  PlanStatus status = PlanStatus::kNothingToExplore;
+  int frontier_id = -1;
+  Path path;
+};
+
+// Single agent: the reachable frontier with the cheapest path.
+FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
+                                     const core::Vec2& agent);
+
+// A team: agents assigned to distinct frontiers minimizing the summed path cost (Hungarian); when there are
+// fewer reachable frontiers than agents, the extra agents take their own cheapest frontier.
+std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
+                                            const std::vector<core::Vec2>& agents);
+
+// H-signature of a polyline with respect to obstacle representative points: for each point, the signed angle
+// the path winds around it.  Two paths with the same ends are homologous iff their signatures agree
+// (to within 2 pi multiples of nothing: compare with a tolerance well below 2 pi).
+std::vector<double> HSignature(const std::vector<core::Vec2>& path, const std::vector<core::Vec2>& obstacle_points);
+
+}  // namespace toponav::planning

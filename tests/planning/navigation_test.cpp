@@ -1,0 +1,144 @@
+#include "planning/navigation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "tests/testing/worlds.h"
+
+namespace toponav::planning {
+namespace {
+
+using core::Vec2;
+
+// A hand-built map view: vertices (id = index), walls between listed pairs, known space = 'known' rings.
+mapping::MapView View(const std::vector<Vec2>& vertices, const std::vector<std::pair<int, int>>& walls,
+                      const std::vector<core::Ring>& known) {
+  mapping::MapView v;
+  for (size_t i = 0; i < vertices.size(); ++i) v.vertices.push_back({int(i), vertices[i], {}, 5});
+  for (const auto& [a, b] : walls) v.walls.push_back({a, b, vertices[size_t(a)], vertices[size_t(b)], 0.9});
+  for (const auto& r : known) v.known_space.push_back({r, {}});
+  return v;
+}
+
+PlannerOptions Fine() {
+  PlannerOptions o;
+  o.inflation_radius = 0.1;
+  o.clearance = 0.05;
+  o.known_space_step = 0.05;
+  return o;
+}
+
+// vertexnav.md §8 test_noisy_navigation: around a wall (0,-1)-(0,1) from (-1,0) to (1,0).
+TEST(VisibilityGraph, PathGoesAroundAWallEnd) {
+  const auto view = View({{0, -1}, {0, 1}}, {{0, 1}}, {testing::Rect(-10, -10, 10, 10)});
+  const VisibilityGraph g(view, Fine(), false);
+  const Path p = g.Plan({-1, 0}, {1, 0});
+  ASSERT_TRUE(p);
+  EXPECT_GE(p.cost, 2 * std::sqrt(2.0));
+  EXPECT_LE(p.cost, 2 * std::sqrt(2.0) + 0.25);
+  for (size_t i = 1; i < p.points.size(); ++i) EXPECT_TRUE(g.Clear(p.points[i - 1], p.points[i]));
+}
+
+TEST(VisibilityGraph, LongerWallGivesLongerDetour) {
+  const auto view = View({{0, -2}, {0, 1}, {0, 5}}, {{0, 1}, {1, 2}}, {testing::Rect(-10, -10, 10, 10)});
+  const Path p = VisibilityGraph(view, Fine(), false).Plan({-1, 0}, {1, 0});
+  ASSERT_TRUE(p);
+  EXPECT_GE(p.cost, 2 * std::sqrt(5.0));
+  EXPECT_LE(p.cost, 2 * std::sqrt(5.0) + 0.25);
+}
+
+TEST(VisibilityGraph, EmptyWorldPathIsStraight) {
+  const auto view = View({}, {}, {testing::Rect(-20, -20, 20, 20)});
+  const Path p = VisibilityGraph(view, Fine(), true).Plan({-5, 0}, {5, 0});
+  ASSERT_TRUE(p);
+  EXPECT_DOUBLE_EQ(p.cost, 10.0);
+}
+
+TEST(VisibilityGraph, ClosedWallMeansNoPathNotAMagicCost) {
+  // A closed box around the goal.
+  const auto view = View({{2, -2}, {6, -2}, {6, 2}, {2, 2}}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}},
+                         {testing::Rect(-10, -10, 10, 10)});
+  const Path p = VisibilityGraph(view, Fine(), false).Plan({-5, 0}, {4, 0});
+  EXPECT_FALSE(p);
+  EXPECT_EQ(p.status, PlanStatus::kNoPath);
+}
+
+TEST(VisibilityGraph, ExplorationStaysInKnownSpace) {
+  // Known space is an L: the straight line from one arm to the other leaves it, so the path bends.
+  const core::Ring L{{0, 0}, {10, 0}, {10, 2}, {2, 2}, {2, 10}, {0, 10}};
+  const auto view = View({}, {}, {L});
+  const Path known = VisibilityGraph(view, Fine(), true).Plan({9, 1}, {1, 9});
+  const Path optimistic = VisibilityGraph(view, Fine(), false).Plan({9, 1}, {1, 9});
+  ASSERT_TRUE(optimistic);
+  EXPECT_NEAR(optimistic.cost, std::sqrt(128.0), 1e-9);
+  // Exploration turns at the L's inner corner (a known-space corner, not a map vertex).
+  ASSERT_TRUE(known);
+  EXPECT_GT(known.cost, optimistic.cost + 1.0);
+  EXPECT_LT(known.cost, 16.5);  // about 8 + 8 along the arms
+  for (const auto& p : known.points) EXPECT_TRUE(core::Contains(L, p));
+}
+
+// A room [0,20]^2 with three openings (frontiers) on three sides.
+mapping::MapView ThreeDoorRoom() {
+  auto view = View({}, {}, {testing::Rect(0, 0, 20, 20)});
+  view.frontiers = {{1, {{20, 8}, {20, 12}}, {20, 10}, 4.0}, {2, {{8, 20}, {12, 20}}, {10, 20}, 4.0},
+                    {3, {{0, 12}, {0, 8}}, {0, 10}, 4.0}};
+  return view;
+}
+
+TEST(Frontiers, TargetsLieInsideKnownSpace) {
+  const auto view = ThreeDoorRoom();
+  const auto targets = FrontierTargets(view, {});
+  ASSERT_EQ(targets.size(), 3u);
+  for (const auto& t : targets) EXPECT_TRUE(core::Contains(view.known_space[0], t.point));
+  PlannerOptions strict;
+  strict.frontier_min_length = 5.0;
+  EXPECT_TRUE(FrontierTargets(view, strict).empty());
+}
+
+TEST(Frontiers, SingleAgentGoesToTheNearest) {
+  const auto view = ThreeDoorRoom();
+  const VisibilityGraph g(view, {}, true);
+  const auto choice = ChooseNearestFrontier(g, FrontierTargets(view, {}), {17, 10});
+  ASSERT_EQ(choice.status, PlanStatus::kFound);
+  EXPECT_EQ(choice.frontier_id, 1);
+  EXPECT_EQ(ChooseNearestFrontier(g, {}, {17, 10}).status, PlanStatus::kNothingToExplore);
+}
+
+TEST(Frontiers, TeamNeverSharesAFrontierWhileEnoughExist) {
+  const auto view = ThreeDoorRoom();
+  const VisibilityGraph g(view, {}, true);
+  const auto targets = FrontierTargets(view, {});
+  // All three agents start together next to door 1: still three different doors.
+  const auto choices = AssignFrontiers(g, targets, {{17, 10}, {17, 10.5}, {17, 9.5}});
+  std::set<int> ids;
+  for (const auto& c : choices) {
+    ASSERT_EQ(c.status, PlanStatus::kFound);
+    ids.insert(c.frontier_id);
+  }
+  EXPECT_EQ(ids.size(), 3u);
+  // Two frontiers for three agents: both are covered, the third agent doubles up.
+  const auto two = AssignFrontiers(g, {targets[0], targets[1]}, {{17, 10}, {10, 17}, {3, 10}});
+  std::set<int> two_ids;
+  for (const auto& c : two) two_ids.insert(c.frontier_id);
+  EXPECT_EQ(two_ids.size(), 2u);
+}
+
+TEST(HSignature, ReverseCancelsAndALoopWindsOnce) {
+  const std::vector<Vec2> obstacles{{0, 0}, {5, 5}};
+  const std::vector<Vec2> seg{{-1, -1}, {1, -1}}, rev{{1, -1}, {-1, -1}};
+  const auto h1 = HSignature(seg, obstacles), h2 = HSignature(rev, obstacles);
+  for (size_t k = 0; k < obstacles.size(); ++k) EXPECT_NEAR(h1[k] + h2[k], 0.0, 1e-12);
+  const std::vector<Vec2> loop{{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 0}};
+  const auto h = HSignature(loop, obstacles);
+  EXPECT_NEAR(h[0], 2 * core::kPi, 1e-9);
+  EXPECT_NEAR(h[1], 0.0, 1e-9);
+  // Left and right around the obstacle at the origin: same ends, different classes.
+  const auto left = HSignature({{-2, 0}, {0, 2}, {2, 0}}, {{0, 0}}), right = HSignature({{-2, 0}, {0, -2}, {2, 0}}, {{0, 0}});
+  EXPECT_NEAR(std::abs(left[0] - right[0]), 2 * core::kPi, 1e-9);
+}
+
+}  // namespace
+}  // namespace toponav::planning
