@@ -3,4 +3,5 @@
 #include "experiments/config.h"
 #include "experiments/draw.h"
 #include "experiments/map_drive.h"
+#include "experiments/trial.h"
 #include "experiments/world_checks.h"

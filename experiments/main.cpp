@@ -298,6 +298,28 @@ int RunMap(MapArgs a) {
   return 0;
 }
 
+// ---------------------------------------------------------------- trial
+
+struct TrialArgs : WorldSource {
+  std::string out = "results/trial";
+  experiments::TrialOptions trial;
+};
+
+int RunTrialCommand(const TrialArgs& a) {
+  const experiments::Config cfg = LoadOrDefault(a.config);
+  const core::World w = WorldFromSource(a, cfg);
+  EnsureDir(a.out);
+  mapping::MapView view;
+  const auto r = experiments::RunSearchTrial(w, cfg, a.trial, a.seed, &view);
+  experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string());
+  double total = 0;
+  for (double d : r.distance) total += d;
+  fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, {:.1f} s -> {}\n",
+             a.seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
+             r.wall_time_s, (fs::path(a.out) / "trial.png").string());
+  return 0;
+}
+
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -386,6 +408,13 @@ int main(int argc, char** argv) {
   map->add_flag("--no-mcmc", ma.no_mcmc, "Build the map without the posterior (every potential vertex kept)");
   map->add_option("--out", ma.out, "Output directory: map.png and map.json")->capture_default_str();
 
+  TrialArgs ta;
+  auto* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers (experimental until the search benchmark lands)");
+  AddWorldSourceOptions(trial, &ta, "YAML config (sensor:, mapping:, motion:)");
+  trial->add_option("--agents", ta.trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
+  trial->add_option("--max-steps", ta.trial.max_steps, "Step cap")->capture_default_str()->check(CLI::Range(1, 100000));
+  trial->add_option("--out", ta.out, "Output directory: trial.png")->capture_default_str();
+
   std::string demo_config = "configs/demo.yaml", demo_out;
   auto* demo = app.add_subcommand("demo", "The default job: one world of each kind: its JSON, top-down picture, observation and panorama under results/");
   demo->add_option("--config", demo_config, "Job config")->capture_default_str();
@@ -406,6 +435,7 @@ int main(int argc, char** argv) {
     if (*observe) return RunObserve(oa);
     if (*render) return RunRender(ra);
     if (*map) return RunMap(ma);
+    if (*trial) return RunTrialCommand(ta);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);
   } catch (const core::ConfigError& e) {

@@ -32,7 +32,7 @@ struct MapperOptions {
   double max_range = 100.0;               // range of hypothetical observations
   double star_rebuild_tolerance = 1.0;    // recompute known space around a map vertex once it drifted this far
   int union_block = 16;                   // observations per cached partial union
-  double frontier_wall_tolerance = 0.05;  // known-space boundary this close to a map wall is wall, not frontier
+  double frontier_wall_tolerance = 1.5;   // known-space boundary this close to a map wall is wall, not frontier
   std::optional<core::Aabb2> world_bounds;  // if set, observations from outside are rejected
   void Validate() const;                  // throws core::ConfigError ("mapping.association_gate_chi2", ...)
 };

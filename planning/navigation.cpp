@@ -19,7 +19,6 @@ void PlannerOptions::Validate() const {
   if (!(clearance >= 0 && clearance < inflation_radius)) fail("planning.clearance", clearance, "must be in [0, inflation_radius)");
   if (!(frontier_min_length >= 0)) fail("planning.frontier_min_length", frontier_min_length, "must be >= 0");
   if (!(frontier_setback > 0)) fail("planning.frontier_setback", frontier_setback, "must be > 0");
-  if (!(known_space_step > 0)) fail("planning.known_space_step", known_space_step, "must be > 0");
 }
 
 namespace {
@@ -108,15 +107,42 @@ int VisibilityGraph::num_edges() const {
   return int(n / 2);
 }
 
-bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b) const {
+bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b) const { return Clear(a, b, false, false); }
+
+bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b, bool relax_a, bool relax_b) const {
   const core::Segment2 s{a, b};
-  for (const auto& w : walls_)
-    if (core::SegmentDistance(s, w) < options_.clearance) return false;
+  // A relaxed end (an agent or a target that may stand close to a wall) only needs the clearance from
+  // 'clearance' along the segment on; the segment may still not touch a wall anywhere.
+  const double len = core::Distance(a, b);
+  core::Segment2 inner = s;
+  if ((relax_a || relax_b) && len > 1e-12) {
+    const Vec2 d = (b - a) / len;
+    const double ca = relax_a ? std::min(options_.clearance, len / 2) : 0.0;
+    const double cb = relax_b ? std::min(options_.clearance, len / 2) : 0.0;
+    inner = {a + d * ca, b - d * cb};
+  }
+  for (const auto& w : walls_) {
+    if (core::SegmentDistance(inner, w) < options_.clearance) return false;
+    if ((relax_a || relax_b) && core::SegmentsIntersect(s, w)) return false;
+  }
   if (require_known_) {
-    const double len = core::Distance(a, b);
-    const int steps = std::max(1, int(std::ceil(len / options_.known_space_step)));
-    for (int k = 1; k < steps; ++k)
-      if (!InKnown(*view_, a + (b - a) * (double(k) / steps))) return false;
+    // Inside known space: the midpoint is inside and the segment crosses no known-space boundary edge.
+    if (!InKnown(*view_, (a + b) * 0.5)) return false;
+    const double minx = std::min(a.x, b.x), maxx = std::max(a.x, b.x), miny = std::min(a.y, b.y), maxy = std::max(a.y, b.y);
+    auto crosses = [&](const core::Ring& ring) {
+      for (size_t i = 0, n = ring.size(); i < n; ++i) {
+        const Vec2 p = ring[i], q = ring[(i + 1) % n];
+        if (std::max(p.x, q.x) < minx || std::min(p.x, q.x) > maxx || std::max(p.y, q.y) < miny || std::min(p.y, q.y) > maxy)
+          continue;
+        if (core::SegmentsIntersect(s, {p, q})) return true;
+      }
+      return false;
+    };
+    for (const auto& poly : view_->known_space) {
+      if (crosses(poly.outer)) return false;
+      for (const auto& h : poly.holes)
+        if (crosses(h)) return false;
+    }
   }
   return true;
 }
@@ -131,11 +157,11 @@ std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vect
   pts.push_back(start);
   pts.insert(pts.end(), goals.begin(), goals.end());
   for (int i = 0; i < n; ++i)
-    if (Clear(start, pts[size_t(i)])) g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
+    if (Clear(start, pts[size_t(i)], true, false)) g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
   for (size_t k = 0; k < goals.size(); ++k) {
     const int gi = n + 1 + int(k);
     for (int i = 0; i <= n; ++i)
-      if (Clear(goals[k], pts[size_t(i)])) g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
+      if (Clear(goals[k], pts[size_t(i)], true, i == n)) g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
   }
   std::vector<Path> out(goals.size());
   for (size_t k = 0; k < goals.size(); ++k) {
@@ -164,13 +190,16 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
         dir = (f.points[i] - f.points[i - 1]) / core::Distance(f.points[i - 1], f.points[i]);
       }
     }
+    // Where known space is thinner than the setback (a sliver), use the midpoint itself.
+    Vec2 target = f.midpoint;
     for (const double side : {1.0, -1.0}) {
       const Vec2 p = f.midpoint + Vec2{-dir.y, dir.x} * (side * options.frontier_setback);
       if (InKnown(view, p)) {
-        out.push_back({f.id, p, f.length});
+        target = p;
         break;
       }
     }
+    out.push_back({f.id, target, f.length});
   }
   return out;
 }

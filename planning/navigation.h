@@ -15,7 +15,6 @@ struct PlannerOptions {
   double clearance = 1.5;          // graph edges keep at least this distance from map walls
   double frontier_min_length = 3.0;  // shorter frontiers are ignored
   double frontier_setback = 2.0;   // a frontier target is this far inside known space from its midpoint
-  double known_space_step = 2.0;   // edges are checked to stay in known space at this spacing
   void Validate() const;           // throws core::ConfigError ("planning.inflation_radius", ...)
 };
 
@@ -41,8 +40,10 @@ class VisibilityGraph {
   int num_nodes() const { return int(nodes_.size()); }
   int num_edges() const;
   const std::vector<core::Vec2>& nodes() const { return nodes_; }
-  // True if the straight segment is traversable under this graph's rules.
+  // True if the straight segment is traversable under this graph's rules; a relaxed end may lie closer than
+  // the clearance to a wall (agents and targets do), the rest of the segment may not.
   bool Clear(const core::Vec2& a, const core::Vec2& b) const;
+  bool Clear(const core::Vec2& a, const core::Vec2& b, bool relax_a, bool relax_b) const;
 
  private:
   const mapping::MapView* view_;
@@ -53,7 +54,8 @@ class VisibilityGraph {
   Graph graph_;
 };
 
-// Where an agent goes to explore a frontier: a point 'frontier_setback' inside known space from its midpoint.
+// Where an agent goes to explore a frontier: a point 'frontier_setback' inside known space from its midpoint
+// (the midpoint itself where known space is thinner than that).
 struct FrontierTarget {
   int frontier_id = 0;
   core::Vec2 point;

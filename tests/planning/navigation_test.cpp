@@ -26,7 +26,6 @@ PlannerOptions Fine() {
   PlannerOptions o;
   o.inflation_radius = 0.1;
   o.clearance = 0.05;
-  o.known_space_step = 0.05;
   return o;
 }
 
@@ -96,6 +95,11 @@ TEST(Frontiers, TargetsLieInsideKnownSpace) {
   PlannerOptions strict;
   strict.frontier_min_length = 5.0;
   EXPECT_TRUE(FrontierTargets(view, strict).empty());
+  PlannerOptions deep;
+  deep.frontier_setback = 30.0;  // deeper than the room: the midpoint itself
+  const auto mids = FrontierTargets(view, deep);
+  ASSERT_EQ(mids.size(), 3u);
+  EXPECT_NEAR(mids[0].point.x, 20.0, 1e-12);
 }
 
 TEST(Frontiers, SingleAgentGoesToTheNearest) {

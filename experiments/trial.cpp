@@ -1,0 +1,117 @@
+#include "experiments/trial.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/rng.h"
+#include "experiments/map_drive.h"
+#include "mapping/polygon_set.h"
+#include "sim/motion.h"
+#include "sim/noisy_sensor.h"
+
+namespace toponav::experiments {
+
+using core::Vec2;
+
+double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map) {
+  const auto& b = world.bounds;
+  mapping::PolygonSet region = mapping::PolygonSet::FromRing({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}});
+  std::vector<mapping::PolygonSet> known;
+  for (const auto& p : map.known_space) known.push_back(mapping::PolygonSet::FromPolygon(p));
+  region.Difference(mapping::PolygonSet::JoinAll(known));
+  std::vector<mapping::PolygonSet> buildings;
+  for (const auto& o : world.obstacles) buildings.push_back(mapping::PolygonSet::FromRing(o));
+  return mapping::IoU(region, mapping::PolygonSet::JoinAll(buildings));
+}
+
+TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,
+                           mapping::MapView* final_view) {
+  const auto t0 = std::chrono::steady_clock::now();
+  TOPONAV_CHECK(o.num_agents >= 1, "num_agents " << o.num_agents);
+  mapping::MapperOptions mo = config.mapping;
+  mo.world_bounds = world.bounds;
+  mapping::Mapper mapper(mo);
+  auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(seed, 1));
+  core::Rng rng(core::DeriveSeed(seed, 2));
+  sim::MotionSim motion(world, config.motion);
+  const bool open_world = !world.has_boundary();
+  TrialResult r;
+  r.seed = seed;
+  r.num_agents = o.num_agents;
+  r.distance.assign(size_t(o.num_agents), 0.0);
+  r.paths.resize(size_t(o.num_agents));
+  std::vector<int> still(size_t(o.num_agents), 0);
+  for (int a = 0; a < o.num_agents; ++a) {
+    motion.AddAgent(world.start);
+    r.paths[size_t(a)].push_back(world.start.position());
+  }
+  r.end_reason = "step_cap";
+  mapping::MapView view;
+  int unreachable = 0;
+  for (int step = 0; step < o.max_steps; ++step) {
+    for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(motion.Pose(a), a));
+    if (o.mcmc_every > 0 && (step % o.mcmc_every == 0)) mapper.SampleMostLikelyMap(rng);
+    view = mapper.View();
+    // Frontiers outside the search region (the office park's bounds) do not count.
+    planning::PlannerOptions po = o.planner;
+    po.clearance = std::max(po.clearance, config.motion.agent_radius + 0.25);
+    std::vector<planning::FrontierTarget> targets;
+    for (const auto& t : planning::FrontierTargets(view, po))
+      if (!open_world || world.bounds.Contains(t.point)) targets.push_back(t);
+    // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out
+    // on the way and the plan is redone every step.
+    const planning::VisibilityGraph graph(view, po, false);
+    std::vector<Vec2> agents;
+    for (int a = 0; a < o.num_agents; ++a) agents.push_back(motion.Pose(a).position());
+    std::vector<planning::FrontierChoice> choices =
+        o.num_agents == 1 ? std::vector<planning::FrontierChoice>{planning::ChooseNearestFrontier(graph, targets, agents[0])}
+                          : planning::AssignFrontiers(graph, targets, agents);
+    bool any = false;
+    for (const auto& c : choices) any = any || c.status == planning::PlanStatus::kFound;
+    r.steps = step + 1;
+    if (targets.empty() && !view.known_space.empty()) {
+      r.end_reason = "explored";
+      r.explored = true;
+      break;
+    }
+    // Frontiers none of the agents can reach for a while: give up (stuck).
+    unreachable = any || targets.empty() ? 0 : unreachable + 1;
+    if (unreachable > 4 * o.stuck_steps) {
+      r.end_reason = "stuck";
+      break;
+    }
+    int stuck = 0;
+    for (int a = 0; a < o.num_agents; ++a) {
+      const auto& c = choices[size_t(a)];
+      std::vector<Vec2> path;
+      if (c.status == planning::PlanStatus::kFound) path.assign(c.path.points.begin() + 1, c.path.points.end());
+      sim::StepResult s = motion.Step(a, path);
+      if (!path.empty() && s.distance < 0.1 * config.motion.step_length) {
+        if (++still[size_t(a)] >= o.stuck_steps) {
+          // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
+          const double ang = rng.Uniform(-core::kPi, core::kPi);
+          s = motion.Nudge(a, Vec2{std::cos(ang), std::sin(ang)} * config.motion.step_length);
+          still[size_t(a)] = 0;
+          ++r.nudges;
+          ++stuck;
+        }
+      } else {
+        still[size_t(a)] = 0;
+      }
+      r.distance[size_t(a)] += s.distance;
+      r.paths[size_t(a)].push_back(s.pose.position());
+    }
+  }
+  if (o.mcmc_every > 0) {
+    mapper.SampleMostLikelyMap(rng);
+    view = mapper.View();
+  }
+  r.iou = open_world ? BuildingPlacementIoU(world, view) : KnownSpaceIoU(world, view);
+  r.success = r.explored && r.iou > o.success_iou;
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (final_view) *final_view = view;
+  return r;
+}
+
+}  // namespace toponav::experiments

@@ -1,0 +1,45 @@
+#pragma once
+// One search trial (paper Sec. IV): agents start together, every step each observes (sensor interface) and
+// the observations join one map, MCMC runs on its cadence, the planner sends each agent towards a frontier
+// (a team to distinct frontiers), and agents move one step.  A trial is a pure function of its spec.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/world.h"
+#include "experiments/config.h"
+#include "planning/navigation.h"
+
+namespace toponav::experiments {
+
+struct TrialOptions {
+  int num_agents = 1;
+  int max_steps = 400;          // step cap (the reference's 400 iterations)
+  int mcmc_every = 5;           // MCMC cadence in steps
+  int stuck_steps = 6;          // an agent that moved less than a tenth of a step this many steps is nudged
+  double success_iou = 0.95;    // success: explored and IoU above this (the paper's criterion)
+  planning::PlannerOptions planner;
+};
+
+struct TrialResult {
+  uint64_t seed = 0;
+  int num_agents = 0;
+  bool explored = false;          // no reachable frontier left
+  bool success = false;
+  int steps = 0;
+  double iou = 0.0;               // indoor: known space vs true free space; office park: building placement
+  std::vector<double> distance;   // travelled per agent
+  int nudges = 0;                 // stuck-agent perturbations
+  std::string end_reason;         // "explored", "step_cap", "stuck"
+  double wall_time_s = 0.0;
+  std::vector<std::vector<core::Vec2>> paths;  // per agent
+};
+
+TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& options,
+                           uint64_t seed, mapping::MapView* final_view = nullptr);
+
+// Office park metric (paper footnote): IoU of the true buildings and the space inside the search region the map
+// has not marked free (so unexplored space and spurious obstacles both count against it).
+double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map);
+
+}  // namespace toponav::experiments

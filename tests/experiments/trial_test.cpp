@@ -1,0 +1,48 @@
+#include "experiments/trial.h"
+
+#include <gtest/gtest.h>
+
+#include "sim/worlds.h"
+
+namespace toponav::experiments {
+namespace {
+
+core::World SmallLabyrinth(uint64_t seed) {
+  sim::LabyrinthOptions o;
+  o.num_rooms = 2;
+  o.grid_cells = 12;
+  o.num_clutter = 10;
+  return sim::GenerateLabyrinth(o, seed);
+}
+
+TEST(SearchTrial, SmallWorldIsFullyExploredByOneAndByThreeAgents) {
+  const Config cfg;
+  for (uint64_t seed : {101, 103}) {
+    const core::World w = SmallLabyrinth(seed);
+    for (int agents : {1, 3}) {
+      TrialOptions o;
+      o.num_agents = agents;
+      const TrialResult r = RunSearchTrial(w, cfg, o, seed);
+      EXPECT_TRUE(r.explored) << "seed " << seed << ", " << agents << " agents: " << r.end_reason;
+      EXPECT_GT(r.iou, 0.95) << "seed " << seed << ", " << agents << " agents";
+      EXPECT_TRUE(r.success);
+      EXPECT_EQ(int(r.distance.size()), agents);
+    }
+  }
+}
+
+TEST(SearchTrial, SameSeedReproducesTheSameResult) {
+  const Config cfg;
+  const core::World w = SmallLabyrinth(102);
+  TrialOptions o;
+  o.num_agents = 3;
+  o.max_steps = 60;
+  const TrialResult a = RunSearchTrial(w, cfg, o, 7), b = RunSearchTrial(w, cfg, o, 7);
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.iou, b.iou);
+  EXPECT_EQ(a.distance, b.distance);
+  EXPECT_EQ(a.paths, b.paths);
+}
+
+}  // namespace
+}  // namespace toponav::experiments
