@@ -173,6 +173,27 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     p.Finish();
   }
   {
+    YamlSection b = top.Section("bench");
+    b.Read("name", &c.bench.name);
+    for (YamlSection row : b.Sequence("rows")) {
+      BenchRow r;
+      std::string kind = "labyrinth";
+      row.Read("kind", &kind);
+      const auto k = core::ParseWorldKind(kind);
+      if (!k || *k == core::WorldKind::kCustom) row.Fail("kind", kind, "unknown world kind (labyrinth, office_park, guided_maze)");
+      r.kind = *k;
+      row.Read("agents", &r.agents, 1, 16);
+      row.Finish();
+      c.bench.rows.push_back(r);
+    }
+    b.Read("first_seed", &c.bench.first_seed);
+    b.Read("num_seeds", &c.bench.num_seeds, 0, 1000000);
+    b.Read("max_steps", &c.bench.max_steps, 1, 100000);
+    b.Read("mcmc_every", &c.bench.mcmc_every, 0, 100000);
+    b.Read("pictures", &c.bench.pictures);
+    b.Finish();
+  }
+  {
     YamlSection d = top.Section("demo");
     std::vector<std::string> kinds;
     if (d.Has("kinds")) {

@@ -23,6 +23,22 @@ struct DemoJob {
   std::string out_dir = "results/worlds";
 };
 
+// A search benchmark (paper Table I): rows of (world kind, agent count), each run over the same seeds.
+struct BenchRow {
+  core::WorldKind kind = core::WorldKind::kLabyrinth;
+  int agents = 1;
+};
+
+struct BenchOptions {
+  std::string name = "search";
+  std::vector<BenchRow> rows;
+  uint64_t first_seed = 10000;   // seeds first_seed .. first_seed + num_seeds - 1 (benchmarks use >= 10000)
+  int num_seeds = 0;
+  int max_steps = 400;
+  int mcmc_every = 5;
+  bool pictures = true;          // a final PNG per trial
+};
+
 struct PictureOptions {
   double pixels_per_unit = 3.0;  // scale of top-down pictures
   int max_pixels = 2400;         // the longer image side is capped at this
@@ -37,6 +53,7 @@ struct Config {
   mapping::MapperOptions mapping;
   PictureOptions picture;
   DemoJob demo;
+  BenchOptions bench;
 };
 
 // Loads and validates 'path'.  Every section and key is optional (defaults above); unknown keys are errors.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -210,6 +211,49 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
   }
   DrawAgent(c, pose, kStart);
   c.Save(png_path);
+}
+
+}  // namespace toponav::experiments
+
+#include "experiments/batch.h"
+
+namespace toponav::experiments {
+
+void WriteStepsPlot(const std::vector<TrialRecord>& records, const std::string& png_path) {
+  // One panel per world kind: steps of each seed's trial, single agent (blue) and team (orange), sorted by
+  // the single-agent steps so the gap between the two is easy to see.
+  std::map<int, std::map<uint64_t, std::pair<int, int>>> panels;  // kind -> seed -> (single, team)
+  int max_steps = 1;
+  for (const auto& r : records) {
+    if (!r.ok) continue;
+    auto& cell = panels[int(r.id.kind)][r.id.seed];
+    (r.id.agents == 1 ? cell.first : cell.second) = r.steps;
+    max_steps = std::max(max_steps, r.steps);
+  }
+  const int pw = 520, ph = 300, margin = 40;
+  const int n = std::max<int>(1, int(panels.size()));
+  cv::Mat img(ph * n, pw, CV_8UC3, cv::Scalar(255, 255, 255));
+  int p = 0;
+  for (const auto& [kind, seeds] : panels) {
+    const int top = p * ph;
+    std::vector<std::pair<int, int>> v;
+    for (const auto& [s, c] : seeds) v.push_back(c);
+    std::sort(v.begin(), v.end());
+    cv::rectangle(img, {margin, top + 20}, {pw - 10, top + ph - margin}, cv::Scalar(180, 180, 180), 1);
+    cv::putText(img, std::string(core::ToString(static_cast<core::WorldKind>(kind))) + ": steps per trial (blue 1 agent, orange team)",
+                {margin, top + 14}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    cv::putText(img, std::to_string(max_steps), {2, top + 28}, cv::FONT_HERSHEY_SIMPLEX, 0.35, cv::Scalar(0, 0, 0), 1);
+    cv::putText(img, "0", {20, top + ph - margin}, cv::FONT_HERSHEY_SIMPLEX, 0.35, cv::Scalar(0, 0, 0), 1);
+    const double plot_w = pw - 10 - margin - 10, plot_h = ph - margin - 20 - 5;
+    for (size_t i = 0; i < v.size(); ++i) {
+      const int x = margin + 5 + int(plot_w * (v.size() == 1 ? 0.5 : double(i) / double(v.size() - 1)));
+      auto y = [&](int steps) { return top + ph - margin - int(plot_h * steps / max_steps); };
+      if (v[i].first > 0) cv::circle(img, {x, y(v[i].first)}, 3, cv::Scalar(200, 100, 20), cv::FILLED, cv::LINE_AA);
+      if (v[i].second > 0) cv::circle(img, {x, y(v[i].second)}, 3, cv::Scalar(20, 120, 240), cv::FILLED, cv::LINE_AA);
+    }
+    ++p;
+  }
+  Save(img, png_path);
 }
 
 }  // namespace toponav::experiments

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "experiments/batch.h"
 #include "experiments/experiments.h"
 #include "learning/learning.h"
 #include "mapping/polygon_set.h"
@@ -320,6 +321,55 @@ int RunTrialCommand(const TrialArgs& a) {
   return 0;
 }
 
+// ---------------------------------------------------------------- bench and report
+
+int RunReport(const std::vector<std::string>& dirs, std::string out) {
+  const auto records = experiments::ReadResults(dirs);
+  if (records.empty()) throw core::DataError(dirs.front(), "no trial results (*.jsonl) found");
+  const auto rows = experiments::Summarize(records);
+  if (out.empty()) out = dirs.front();
+  EnsureDir(out);
+  const std::string md = experiments::MarkdownTable(rows);
+  std::ofstream((fs::path(out) / "report.md").string()) << md;
+  std::ofstream((fs::path(out) / "report.csv").string()) << experiments::CsvTable(rows);
+  experiments::WriteStepsPlot(records, (fs::path(out) / "steps.png").string());
+  fmt::print("{}\n{} trials from {} director{}; wrote {}/report.md, report.csv, steps.png\n", md, records.size(),
+             dirs.size(), dirs.size() == 1 ? "y" : "ies", out);
+  return 0;
+}
+
+struct BenchArgs {
+  std::string config = "configs/search/quick.yaml", out, shard, seeds;
+  experiments::BatchOptions batch;
+  bool quiet = false;
+};
+
+int RunBench(BenchArgs a) {
+  const experiments::Config cfg = experiments::LoadConfig(a.config);
+  if (cfg.bench.rows.empty()) throw core::ConfigError(a.config, "bench.rows", "[]", "list at least one row");
+  a.batch.out_dir = a.out.empty() ? "results/" + cfg.bench.name : a.out;
+  a.batch.progress = !a.quiet;
+  if (!a.shard.empty()) {
+    const auto slash = a.shard.find('/');
+    try {
+      if (slash == std::string::npos) throw std::invalid_argument(a.shard);
+      a.batch.shard_index = std::stoi(a.shard.substr(0, slash));
+      a.batch.shard_count = std::stoi(a.shard.substr(slash + 1));
+    } catch (const std::exception&) {
+      throw core::ConfigError("<command line>", "--shard", a.shard, "expected i/N");
+    }
+    if (a.batch.shard_count < 1 || a.batch.shard_index < 0 || a.batch.shard_index >= a.batch.shard_count)
+      throw core::ConfigError("<command line>", "--shard", a.shard, "expected 0 <= i < N");
+  }
+  const auto trials = experiments::ListTrials(cfg.bench, a.seeds.empty() ? std::vector<uint64_t>{} : ParseSeeds(a.seeds));
+  fmt::print("toponav bench {}: {} trials ({} rows), results in {}\n", cfg.bench.name, trials.size(), cfg.bench.rows.size(),
+             a.batch.out_dir);
+  const auto s = experiments::RunBatch(cfg, a.batch, trials);
+  fmt::print("{} of {} trials were already done; ran {} ({} failed) in {:.1f} s\n", s.already_done, s.total, s.ran,
+             s.failed, s.wall_s);
+  return RunReport({a.batch.out_dir}, a.batch.out_dir);
+}
+
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -415,6 +465,25 @@ int main(int argc, char** argv) {
   trial->add_option("--max-steps", ta.trial.max_steps, "Step cap")->capture_default_str()->check(CLI::Range(1, 100000));
   trial->add_option("--out", ta.out, "Output directory: trial.png")->capture_default_str();
 
+  BenchArgs ba;
+  auto* bench = app.add_subcommand("bench", "Run a search benchmark (paper Table I): trials in parallel processes, "
+                                             "JSON lines, resumable, shardable; prints the table");
+  bench->add_option("--config", ba.config, "Benchmark config (bench: rows, seeds, max_steps, ...)")->capture_default_str();
+  bench->add_option("--out", ba.out, "Results directory (default results/<bench.name>)");
+  bench->add_option("--workers", ba.batch.workers, "Parallel trial processes (default: all cores)")->check(CLI::Range(0, 256));
+  bench->add_option("--shard", ba.shard, "Run only shard i of N (i/N, 0-based), e.g. 0/4 for a cluster job array");
+  bench->add_option("--seeds", ba.seeds, "Override the config's seeds: N or A-B");
+  bench->add_option("--max-trials", ba.batch.max_new_trials, "Stop after this many new trials (resume later)")->check(CLI::Range(0, 100000000));
+  bench->add_flag("--quiet", ba.quiet, "No progress lines");
+  bench->add_option("--fail-trial", ba.batch.fail_key, "Testing: make this trial (e.g. labyrinth/a1/s10000) throw")->group("");
+  bench->add_option("--crash-trial", ba.batch.crash_key, "Testing: make this trial's process crash")->group("");
+
+  std::vector<std::string> report_dirs;
+  std::string report_out;
+  auto* report = app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");
+  report->add_option("dirs", report_dirs, "Results directories")->required();
+  report->add_option("--out", report_out, "Where to write report.md, report.csv, steps.png (default: the first directory)");
+
   std::string demo_config = "configs/demo.yaml", demo_out;
   auto* demo = app.add_subcommand("demo", "The default job: one world of each kind: its JSON, top-down picture, observation and panorama under results/");
   demo->add_option("--config", demo_config, "Job config")->capture_default_str();
@@ -436,6 +505,8 @@ int main(int argc, char** argv) {
     if (*render) return RunRender(ra);
     if (*map) return RunMap(ma);
     if (*trial) return RunTrialCommand(ta);
+    if (*bench) return RunBench(ba);
+    if (*report) return RunReport(report_dirs, report_out);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);
   } catch (const core::ConfigError& e) {

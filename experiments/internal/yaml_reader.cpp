@@ -50,6 +50,18 @@ YamlSection YamlSection::Section(const std::string& key) {
   return YamlSection(Get(key), file_, KeyPath(key));
 }
 
+std::vector<YamlSection> YamlSection::Sequence(const std::string& key) {
+  std::vector<YamlSection> out;
+  if (!Has(key)) return out;
+  const YAML::Node n = Get(key);
+  if (!n.IsSequence()) Fail(key, Text(n), "expected a list");
+  for (size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].IsMap()) Fail(key + "[" + std::to_string(i) + "]", Text(n[i]), "expected a mapping of keys");
+    out.emplace_back(n[i], file_, KeyPath(key) + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
 void YamlSection::Read(const std::string& key, double* out, double lo, double hi) {
   if (!Has(key)) return;
   const YAML::Node n = Get(key);

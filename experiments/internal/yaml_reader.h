@@ -17,6 +17,8 @@ class YamlSection {
   bool Has(const std::string& key) const;
   // A nested mapping (empty if absent).
   YamlSection Section(const std::string& key);
+  // A list of mappings (empty if absent); items are named key[0], key[1], ... in errors.
+  std::vector<YamlSection> Sequence(const std::string& key);
 
   void Read(const std::string& key, double* out, double lo, double hi);
   void Read(const std::string& key, int* out, int lo, int hi);

@@ -1,0 +1,315 @@
+#include "experiments/batch.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "core/error.h"
+#include "experiments/draw.h"
+#include "experiments/trial.h"
+#include "sim/worlds.h"
+
+namespace toponav::experiments {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string TrialId::Key() const {
+  return std::string(core::ToString(kind)) + "/a" + std::to_string(agents) + "/s" + std::to_string(seed);
+}
+
+std::vector<TrialId> ListTrials(const BenchOptions& bench, const std::vector<uint64_t>& seed_override) {
+  std::vector<uint64_t> seeds = seed_override;
+  if (seeds.empty())
+    for (int i = 0; i < bench.num_seeds; ++i) seeds.push_back(bench.first_seed + uint64_t(i));
+  std::vector<TrialId> out;
+  for (const auto& row : bench.rows)
+    for (uint64_t s : seeds) out.push_back({row.kind, row.agents, s});
+  return out;
+}
+
+namespace {
+
+json RecordJson(const TrialId& id, const TrialResult* r, const std::string& error) {
+  json j;
+  j["id"] = id.Key();
+  j["kind"] = core::ToString(id.kind);
+  j["agents"] = id.agents;
+  j["seed"] = id.seed;
+  j["ok"] = r != nullptr;
+  if (!r) {
+    j["error"] = error;
+    return j;
+  }
+  j["success"] = r->success;
+  j["explored"] = r->explored;
+  j["steps"] = r->steps;
+  j["iou"] = r->iou;
+  double d = 0;
+  for (double x : r->distance) d += x;
+  j["distance"] = d;
+  j["distance_per_agent"] = r->distance;
+  j["nudges"] = r->nudges;
+  j["end_reason"] = r->end_reason;
+  j["wall_time_s"] = r->wall_time_s;
+  return j;
+}
+
+// Runs in the forked child: the trial, its picture, and one JSON line on 'fd'.
+[[noreturn]] void ChildMain(const Config& config, const BatchOptions& o, const TrialId& id, int fd) {
+  std::string line;
+  try {
+    if (id.Key() == o.crash_key) std::raise(SIGSEGV);
+    if (id.Key() == o.fail_key) throw core::InternalError("injected failure for " + id.Key());
+    const core::World w = sim::GenerateWorld(id.kind, config.worlds, id.seed);
+    TrialOptions t;
+    t.num_agents = id.agents;
+    t.max_steps = config.bench.max_steps;
+    t.mcmc_every = config.bench.mcmc_every;
+    mapping::MapView view;
+    const TrialResult r = RunSearchTrial(w, config, t, id.seed, &view);
+    if (config.bench.pictures) {
+      const fs::path dir = fs::path(o.out_dir) / "pictures";
+      fs::create_directories(dir);
+      std::string name = id.Key();
+      std::replace(name.begin(), name.end(), '/', '_');
+      DrawMapPicture(w, view, r.paths, config.picture, (dir / (name + ".png")).string());
+    }
+    line = RecordJson(id, &r, "").dump();
+  } catch (const std::exception& e) {
+    line = RecordJson(id, nullptr, e.what()).dump();
+  }
+  line += "\n";
+  for (size_t off = 0; off < line.size();) {
+    const ssize_t n = ::write(fd, line.data() + off, line.size() - off);
+    if (n <= 0) break;
+    off += size_t(n);
+  }
+  ::close(fd);
+  std::_Exit(0);
+}
+
+std::string FormatDuration(double s) {
+  const int t = int(s + 0.5);
+  std::ostringstream os;
+  if (t >= 3600) os << t / 3600 << "h";
+  if (t >= 60) os << (t / 60) % 60 << "m";
+  os << t % 60 << "s";
+  return os.str();
+}
+
+}  // namespace
+
+BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::vector<TrialId>& all) {
+  const auto t0 = std::chrono::steady_clock::now();
+  TOPONAV_CHECK(o.shard_count >= 1 && o.shard_index >= 0 && o.shard_index < o.shard_count,
+                "shard " << o.shard_index << "/" << o.shard_count);
+  fs::create_directories(o.out_dir);
+  BatchSummary summary;
+  summary.results_file = (fs::path(o.out_dir) / (o.shard_count == 1 ? std::string("trials.jsonl")
+                                                                      : "trials-" + std::to_string(o.shard_index) + "-of-" +
+                                                                            std::to_string(o.shard_count) + ".jsonl"))
+                             .string();
+  // Resume: whatever this directory already holds is done.
+  std::set<std::string> done;
+  for (const auto& r : ReadResults({o.out_dir})) done.insert(r.id.Key());
+  std::vector<TrialId> todo;
+  for (size_t k = 0; k < all.size(); ++k) {
+    if (int(k % size_t(o.shard_count)) != o.shard_index) continue;
+    ++summary.total;
+    if (done.count(all[k].Key())) ++summary.already_done;
+    else todo.push_back(all[k]);
+  }
+  if (o.max_new_trials >= 0 && int(todo.size()) > o.max_new_trials) todo.resize(size_t(o.max_new_trials));
+  // A run killed mid-write leaves a partial last line: close it so the next record starts on its own line.
+  bool ends_cleanly = true;
+  {
+    std::ifstream prev(summary.results_file, std::ios::binary | std::ios::ate);
+    if (prev && prev.tellg() > 0) {
+      prev.seekg(-1, std::ios::end);
+      ends_cleanly = prev.get() == '\n';
+    }
+  }
+  std::ofstream out(summary.results_file, std::ios::app);
+  if (!out) throw core::DataError(summary.results_file, "cannot open for appending");
+  if (!ends_cleanly) out << "\n";
+  const int workers = o.workers > 0 ? o.workers : std::max(1u, std::thread::hardware_concurrency());
+  const bool tty = o.progress && ::isatty(2);
+  struct Child {
+    pid_t pid;
+    int fd;
+    TrialId id;
+    std::string buffer;
+  };
+  std::vector<Child> running;
+  size_t next = 0;
+  auto report_progress = [&]() {
+    if (!o.progress) return;
+    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const int finished = summary.ran;
+    const double eta = finished > 0 ? el / finished * double(todo.size() - size_t(finished)) : 0.0;
+    std::cerr << (tty ? "\r" : "") << "[bench] " << summary.already_done + finished << "/" << summary.total << " trials done ("
+              << summary.failed << " failed), elapsed " << FormatDuration(el)
+              << (finished > 0 ? ", ETA " + FormatDuration(eta) : std::string()) << (tty ? "   " : "\n") << std::flush;
+  };
+  while (next < todo.size() || !running.empty()) {
+    while (next < todo.size() && int(running.size()) < workers) {
+      int fds[2];
+      if (::pipe(fds) != 0) throw core::InternalError("pipe() failed");
+      std::cout.flush();
+      std::cerr.flush();
+      const pid_t pid = ::fork();
+      if (pid < 0) throw core::InternalError("fork() failed");
+      if (pid == 0) {
+        ::close(fds[0]);
+        ChildMain(config, o, todo[next], fds[1]);
+      }
+      ::close(fds[1]);
+      running.push_back({pid, fds[0], todo[next], ""});
+      ++next;
+    }
+    // Read whatever the children wrote, then reap those that finished.
+    std::vector<pollfd> pfds;
+    for (const auto& c : running) pfds.push_back({c.fd, POLLIN, 0});
+    ::poll(pfds.data(), nfds_t(pfds.size()), 200);
+    for (size_t i = 0; i < running.size(); ++i) {
+      Child& c = running[i];
+      char buf[4096];
+      ssize_t n;
+      while ((pfds[i].revents & (POLLIN | POLLHUP)) && (n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
+      int status = 0;
+      if (::waitpid(c.pid, &status, WNOHANG) != c.pid) continue;
+      while ((n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
+      ::close(c.fd);
+      std::string line = c.buffer;
+      json j;
+      bool parsed = false;
+      try {
+        if (!line.empty() && line.back() == '\n') {
+          j = json::parse(line);
+          parsed = true;
+        }
+      } catch (const json::exception&) {
+      }
+      if (!parsed) {
+        const std::string why = WIFSIGNALED(status) ? "crashed with signal " + std::to_string(WTERMSIG(status))
+                                                    : "exited with status " + std::to_string(WEXITSTATUS(status)) + " and no result";
+        j = RecordJson(c.id, nullptr, why);
+      }
+      if (!j.value("ok", false)) ++summary.failed;
+      out << j.dump() << "\n" << std::flush;  // one whole line per trial: a kill loses at most the running ones
+      ++summary.ran;
+      running.erase(running.begin() + long(i));
+      --i;
+      pfds.erase(pfds.begin() + long(i + 1));
+      report_progress();
+    }
+  }
+  if (tty) std::cerr << "\n";
+  summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return summary;
+}
+
+std::vector<TrialRecord> ReadResults(const std::vector<std::string>& dirs) {
+  std::map<std::string, TrialRecord> by_key;
+  for (const auto& dir : dirs) {
+    if (!fs::is_directory(dir)) throw core::DataError(dir, "not a directory");
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".jsonl") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+      std::ifstream in(f);
+      std::string line;
+      while (std::getline(in, line)) {
+        try {
+          const json j = json::parse(line);
+          TrialRecord r;
+          const auto kind = core::ParseWorldKind(j.at("kind").get<std::string>());
+          if (!kind) continue;
+          r.id = {*kind, j.at("agents").get<int>(), j.at("seed").get<uint64_t>()};
+          r.ok = j.at("ok").get<bool>();
+          r.error = j.value("error", "");
+          r.success = j.value("success", false);
+          r.explored = j.value("explored", false);
+          r.steps = j.value("steps", 0);
+          r.iou = j.value("iou", 0.0);
+          r.distance = j.value("distance", 0.0);
+          r.wall_time_s = j.value("wall_time_s", 0.0);
+          r.end_reason = j.value("end_reason", "");
+          by_key[r.id.Key()] = r;
+        } catch (const json::exception&) {
+          // a half-written line from a killed run
+        }
+      }
+    }
+  }
+  std::vector<TrialRecord> out;
+  for (auto& [k, r] : by_key) out.push_back(r);
+  return out;
+}
+
+std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records) {
+  std::map<std::pair<int, int>, ReportRow> rows;
+  for (const auto& r : records) {
+    ReportRow& row = rows[{int(r.id.kind), r.id.agents}];
+    row.kind = r.id.kind;
+    row.agents = r.id.agents;
+    ++row.trials;
+    if (!r.ok) {
+      ++row.failed;
+      continue;
+    }
+    row.successes += r.success;
+    row.mean_steps += r.steps;
+    row.mean_iou += r.iou;
+  }
+  std::vector<ReportRow> out;
+  for (auto& [k, row] : rows) {
+    const int ok = row.trials - row.failed;
+    if (ok > 0) {
+      row.mean_steps /= ok;
+      row.mean_iou /= ok;
+    }
+    out.push_back(row);
+  }
+  return out;
+}
+
+std::string MarkdownTable(const std::vector<ReportRow>& rows) {
+  std::ostringstream os;
+  os << "| environment | agents | success | mean steps | mean IoU | failed runs |\n";
+  os << "|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "| %s | %d | %d/%d | %.1f | %.4f | %d |\n", core::ToString(r.kind), r.agents,
+                  r.successes, r.trials, r.mean_steps, r.mean_iou, r.failed);
+    os << buf;
+  }
+  return os.str();
+}
+
+std::string CsvTable(const std::vector<ReportRow>& rows) {
+  std::ostringstream os;
+  os << "environment,agents,trials,successes,mean_steps,mean_iou,failed\n";
+  for (const auto& r : rows)
+    os << core::ToString(r.kind) << "," << r.agents << "," << r.trials << "," << r.successes << "," << r.mean_steps << ","
+       << r.mean_iou << "," << r.failed << "\n";
+  return os.str();
+}
+
+}  // namespace toponav::experiments

@@ -1,0 +1,77 @@
+#pragma once
+// The batch runner behind `toponav bench` and `toponav report`.  Trials are pure functions of (config, world
+// kind, agent count, seed).  Each trial runs in its own forked process (up to 'workers' at once), so a trial
+// that throws or crashes is recorded as failed and the batch goes on.  Finished trials are appended as JSON
+// lines; a rerun skips them (resume after a kill), and --shard i/N splits a sweep across machines.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/world.h"
+#include "experiments/config.h"
+
+namespace toponav::experiments {
+
+struct TrialId {
+  core::WorldKind kind = core::WorldKind::kLabyrinth;
+  int agents = 1;
+  uint64_t seed = 0;
+  std::string Key() const;  // "labyrinth/a1/s10000"
+};
+
+// Every trial of the bench config, rows in order, seeds ascending ('seed_range' overrides the config's).
+std::vector<TrialId> ListTrials(const BenchOptions& bench, const std::vector<uint64_t>& seed_override = {});
+
+struct BatchOptions {
+  std::string out_dir;
+  int workers = 0;              // 0: all cores
+  int shard_index = 0;          // run only trials k with k % shard_count == shard_index
+  int shard_count = 1;
+  int max_new_trials = -1;      // stop after this many new trials (-1: all); for tests and partial runs
+  bool progress = true;         // progress and ETA on stderr
+  std::string fail_key;         // testing: this trial throws
+  std::string crash_key;        // testing: this trial's process crashes (SIGSEGV)
+};
+
+struct BatchSummary {
+  int total = 0;        // trials in this shard
+  int already_done = 0; // found in the results file
+  int ran = 0;
+  int failed = 0;
+  double wall_s = 0.0;
+  std::string results_file;
+};
+
+BatchSummary RunBatch(const Config& config, const BatchOptions& options, const std::vector<TrialId>& trials);
+
+// One line of a results file.
+struct TrialRecord {
+  TrialId id;
+  bool ok = false;          // false: the trial threw or crashed ('error' says how)
+  std::string error;
+  bool success = false;
+  bool explored = false;
+  int steps = 0;
+  double iou = 0.0;
+  double distance = 0.0;    // summed over agents
+  double wall_time_s = 0.0;
+  std::string end_reason;
+};
+
+// All records of the *.jsonl files in 'dirs' (one per trial key; malformed lines, e.g. a half-written last
+// line of a killed run, are skipped).
+std::vector<TrialRecord> ReadResults(const std::vector<std::string>& dirs);
+
+struct ReportRow {
+  core::WorldKind kind = core::WorldKind::kLabyrinth;
+  int agents = 1;
+  int trials = 0, successes = 0, failed = 0;
+  double mean_steps = 0.0, mean_iou = 0.0;
+};
+std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records);
+std::string MarkdownTable(const std::vector<ReportRow>& rows);
+std::string CsvTable(const std::vector<ReportRow>& rows);
+// Steps per trial, single agent against the team, per world kind (PNG).
+void WriteStepsPlot(const std::vector<TrialRecord>& records, const std::string& png_path);
+
+}  // namespace toponav::experiments
