@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <set>
 
 #include "core/error.h"
 #include "core/rng.h"
@@ -49,6 +50,11 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   r.end_reason = "step_cap";
   mapping::MapView view;
   int unreachable = 0;
+  // Frontiers an agent reached without them going away (a wall the map has not accepted yet, a sliver) are
+  // given up after a while, so they cannot hold a trial forever.  (Frontiers recede as an agent approaches,
+  // so "no progress" alone is not a reason: only dwelling next to the target is.)
+  std::set<int> given_up;
+  std::vector<int> dwell(size_t(o.num_agents), 0), dwell_frontier(size_t(o.num_agents), -1);
   for (int step = 0; step < o.max_steps; ++step) {
     for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(motion.Pose(a), a));
     if (o.mcmc_every > 0 && (step % o.mcmc_every == 0)) mapper.SampleMostLikelyMap(rng);
@@ -58,7 +64,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     po.clearance = std::max(po.clearance, config.motion.agent_radius + 0.25);
     std::vector<planning::FrontierTarget> targets;
     for (const auto& t : planning::FrontierTargets(view, po))
-      if (!open_world || world.bounds.Contains(t.point)) targets.push_back(t);
+      if ((!open_world || world.bounds.Contains(t.point)) && !given_up.count(t.frontier_id)) targets.push_back(t);
     // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out
     // on the way and the plan is redone every step.
     const planning::VisibilityGraph graph(view, po, false);
@@ -84,6 +90,13 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     int stuck = 0;
     for (int a = 0; a < o.num_agents; ++a) {
       const auto& c = choices[size_t(a)];
+      if (c.status == planning::PlanStatus::kFound && c.path.cost < o.give_up_distance) {
+        dwell[size_t(a)] = dwell_frontier[size_t(a)] == c.frontier_id ? dwell[size_t(a)] + 1 : 1;
+        dwell_frontier[size_t(a)] = c.frontier_id;
+        if (dwell[size_t(a)] > o.give_up_steps) given_up.insert(c.frontier_id);
+      } else {
+        dwell[size_t(a)] = 0;
+      }
       std::vector<Vec2> path;
       if (c.status == planning::PlanStatus::kFound) path.assign(c.path.points.begin() + 1, c.path.points.end());
       sim::StepResult s = motion.Step(a, path);
