@@ -55,6 +55,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   // so "no progress" alone is not a reason: only dwelling next to the target is.)
   std::set<int> given_up;
   std::vector<int> dwell(size_t(o.num_agents), 0), dwell_frontier(size_t(o.num_agents), -1);
+  std::vector<int> committed(size_t(o.num_agents), -1);
   for (int step = 0; step < o.max_steps; ++step) {
     for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(motion.Pose(a), a));
     if (o.mcmc_every > 0 && (step % o.mcmc_every == 0)) mapper.SampleMostLikelyMap(rng);
@@ -73,6 +74,27 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     std::vector<planning::FrontierChoice> choices =
         o.num_agents == 1 ? std::vector<planning::FrontierChoice>{planning::ChooseNearestFrontier(graph, targets, agents[0])}
                           : planning::AssignFrontiers(graph, targets, agents);
+    // Commitment: an agent keeps heading for its previous frontier while it exists and costs at most a little
+    // more than the new choice (switching back and forth between two frontiers wastes the whole trial).
+    for (int a = 0; a < o.num_agents; ++a) {
+      auto& c = choices[size_t(a)];
+      const int prev = committed[size_t(a)];
+      if (prev < 0 || c.status != planning::PlanStatus::kFound || c.frontier_id == prev) continue;
+      for (const auto& t : targets) {
+        if (t.frontier_id != prev) continue;
+        const planning::Path keep = graph.Plan(agents[size_t(a)], t.point);
+        if (keep && keep.cost <= o.switch_ratio * c.path.cost + o.switch_margin) {
+          bool taken = false;  // a team member may have been given it meanwhile
+          for (int b = 0; b < o.num_agents; ++b) taken = taken || (b != a && choices[size_t(b)].frontier_id == prev);
+          if (!taken) {
+            c.frontier_id = prev;
+            c.path = keep;
+          }
+        }
+      }
+    }
+    for (int a = 0; a < o.num_agents; ++a)
+      committed[size_t(a)] = choices[size_t(a)].status == planning::PlanStatus::kFound ? choices[size_t(a)].frontier_id : -1;
     bool any = false;
     for (const auto& c : choices) any = any || c.status == planning::PlanStatus::kFound;
     r.steps = step + 1;

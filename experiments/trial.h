@@ -18,6 +18,8 @@ struct TrialOptions {
   int mcmc_every = 5;           // MCMC cadence in steps
   int stuck_steps = 6;          // an agent that moved less than a tenth of a step this many steps is nudged
   double success_iou = 0.95;    // success: explored and IoU above this (the paper's criterion)
+  double switch_ratio = 1.5;    // an agent keeps its frontier unless a new one is cheaper than cost/ratio ...
+  double switch_margin = 10.0;  // ... and by more than this
   double give_up_distance = 4.0;  // an agent this close to its frontier target ...
   int give_up_steps = 10;       // ... for this many steps without the frontier going away gives it up
   planning::PlannerOptions planner;
