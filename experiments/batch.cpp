@@ -80,6 +80,7 @@ json RecordJson(const TrialId& id, const TrialResult* r, const std::string& erro
     t.num_agents = id.agents;
     t.max_steps = config.bench.max_steps;
     t.mcmc_every = config.bench.mcmc_every;
+    t.planner = config.planning;
     mapping::MapView view;
     const TrialResult r = RunSearchTrial(w, config, t, id.seed, &view);
     if (config.bench.pictures) {

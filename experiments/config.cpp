@@ -69,7 +69,8 @@ void Validate(const Config& c) {
   } catch (const core::ConfigError& e) {
     throw core::ConfigError(c.source, "worlds." + e.key(), e.value(), e.problem());
   }
-  for (auto validate : {+[](const Config& x) { x.sensor.Validate(); }, +[](const Config& x) { x.mapping.Validate(); }}) {
+  for (auto validate : {+[](const Config& x) { x.sensor.Validate(); }, +[](const Config& x) { x.mapping.Validate(); },
+                        +[](const Config& x) { x.planning.Validate(); }}) {
     try {
       validate(c);
     } catch (const core::ConfigError& e) {
@@ -171,6 +172,14 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     p.Read("pixels_per_unit", &c.picture.pixels_per_unit, 0.1, 50.0);
     p.Read("max_pixels", &c.picture.max_pixels, 100, 20000);
     p.Finish();
+  }
+  {
+    YamlSection pl = top.Section("planning");
+    pl.Read("inflation_radius", &c.planning.inflation_radius, 0.01, 100.0);
+    pl.Read("clearance", &c.planning.clearance, 0.0, 100.0);
+    pl.Read("frontier_min_length", &c.planning.frontier_min_length, 0.0, 1000.0);
+    pl.Read("frontier_setback", &c.planning.frontier_setback, 0.01, 100.0);
+    pl.Finish();
   }
   {
     YamlSection b = top.Section("bench");

@@ -8,6 +8,7 @@
 
 #include "core/world.h"
 #include "mapping/mapping.h"
+#include "planning/navigation.h"
 #include "sim/motion.h"
 #include "sim/noisy_sensor.h"
 #include "sim/render.h"
@@ -51,6 +52,7 @@ struct Config {
   sim::RenderOptions render;
   sim::NoisySensorOptions sensor;
   mapping::MapperOptions mapping;
+  planning::PlannerOptions planning;
   PictureOptions picture;
   DemoJob demo;
   BenchOptions bench;

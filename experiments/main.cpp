@@ -311,7 +311,9 @@ int RunTrialCommand(const TrialArgs& a) {
   const core::World w = WorldFromSource(a, cfg);
   EnsureDir(a.out);
   mapping::MapView view;
-  const auto r = experiments::RunSearchTrial(w, cfg, a.trial, a.seed, &view);
+  experiments::TrialOptions t = a.trial;
+  t.planner = cfg.planning;
+  const auto r = experiments::RunSearchTrial(w, cfg, t, a.seed, &view);
   experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string());
   double total = 0;
   for (double d : r.distance) total += d;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "core/error.h"
@@ -54,7 +55,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   // given up after a while, so they cannot hold a trial forever.  (Frontiers recede as an agent approaches,
   // so "no progress" alone is not a reason: only dwelling next to the target is.)
   std::set<int> given_up;
-  std::vector<int> dwell(size_t(o.num_agents), 0), dwell_frontier(size_t(o.num_agents), -1);
+  std::map<int, int> near_steps;
   std::vector<int> committed(size_t(o.num_agents), -1);
   for (int step = 0; step < o.max_steps; ++step) {
     for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(motion.Pose(a), a));
@@ -103,22 +104,24 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       r.explored = true;
       break;
     }
-    // Frontiers none of the agents can reach for a while: give up (stuck).
+    // Frontiers none of the agents can reach for a while: no reachable frontier is left, which is the
+    // paper's definition of explored (a map error that walls one off shows in the IoU instead).
     unreachable = any || targets.empty() ? 0 : unreachable + 1;
     if (unreachable > 4 * o.stuck_steps) {
-      r.end_reason = "stuck";
+      r.end_reason = "unreachable";
+      r.explored = true;
       break;
+    }
+    // A frontier some agent has stood next to for give_up_steps steps without it going away is given up
+    // (counted per frontier, so it holds however the team assignment shuffles).
+    for (const auto& t : targets) {
+      bool near = false;
+      for (const auto& p : agents) near = near || core::Distance(p, t.point) < o.give_up_distance;
+      if (near && ++near_steps[t.frontier_id] > o.give_up_steps) given_up.insert(t.frontier_id);
     }
     int stuck = 0;
     for (int a = 0; a < o.num_agents; ++a) {
       const auto& c = choices[size_t(a)];
-      if (c.status == planning::PlanStatus::kFound && c.path.cost < o.give_up_distance) {
-        dwell[size_t(a)] = dwell_frontier[size_t(a)] == c.frontier_id ? dwell[size_t(a)] + 1 : 1;
-        dwell_frontier[size_t(a)] = c.frontier_id;
-        if (dwell[size_t(a)] > o.give_up_steps) given_up.insert(c.frontier_id);
-      } else {
-        dwell[size_t(a)] = 0;
-      }
       std::vector<Vec2> path;
       if (c.status == planning::PlanStatus::kFound) path.assign(c.path.points.begin() + 1, c.path.points.end());
       sim::StepResult s = motion.Step(a, path);

@@ -28,13 +28,13 @@ struct TrialOptions {
 struct TrialResult {
   uint64_t seed = 0;
   int num_agents = 0;
-  bool explored = false;          // no reachable frontier left
+  bool explored = false;          // no reachable frontier left (none at all, or none reachable for a while)
   bool success = false;
   int steps = 0;
   double iou = 0.0;               // indoor: known space vs true free space; office park: building placement
   std::vector<double> distance;   // travelled per agent
   int nudges = 0;                 // stuck-agent perturbations
-  std::string end_reason;         // "explored", "step_cap", "stuck"
+  std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;
   std::vector<std::vector<core::Vec2>> paths;  // per agent
 };

@@ -13,7 +13,7 @@ namespace toponav::planning {
 struct PlannerOptions {
   double inflation_radius = 4.8;   // graph nodes sit this far from map vertices (0.8 * the reference's rho = 6)
   double clearance = 1.5;          // graph edges keep at least this distance from map walls
-  double frontier_min_length = 3.0;  // shorter frontiers are ignored
+  double frontier_min_length = 8.0;  // shorter frontiers (slivers along walls) are ignored
   double frontier_setback = 2.0;   // a frontier target is this far inside known space from its midpoint
   void Validate() const;           // throws core::ConfigError ("planning.inflation_radius", ...)
 };
