@@ -82,8 +82,8 @@ TEST(VisibilityGraph, ExplorationStaysInKnownSpace) {
 // A room [0,20]^2 with three openings (frontiers) on three sides.
 mapping::MapView ThreeDoorRoom() {
   auto view = View({}, {}, {testing::Rect(0, 0, 20, 20)});
-  view.frontiers = {{1, {{20, 8}, {20, 12}}, {20, 10}, 4.0}, {2, {{8, 20}, {12, 20}}, {10, 20}, 4.0},
-                    {3, {{0, 12}, {0, 8}}, {0, 10}, 4.0}};
+  view.frontiers = {{1, {{20, 5}, {20, 15}}, {20, 10}, 10.0}, {2, {{5, 20}, {15, 20}}, {10, 20}, 10.0},
+                    {3, {{0, 15}, {0, 5}}, {0, 10}, 10.0}};
   return view;
 }
 
@@ -93,7 +93,7 @@ TEST(Frontiers, TargetsLieInsideKnownSpace) {
   ASSERT_EQ(targets.size(), 3u);
   for (const auto& t : targets) EXPECT_TRUE(core::Contains(view.known_space[0], t.point));
   PlannerOptions strict;
-  strict.frontier_min_length = 5.0;
+  strict.frontier_min_length = 12.0;
   EXPECT_TRUE(FrontierTargets(view, strict).empty());
   PlannerOptions deep;
   deep.frontier_setback = 30.0;  // deeper than the room: the midpoint itself
