@@ -193,7 +193,9 @@ BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::ve
       ssize_t n;
       while ((pfds[i].revents & (POLLIN | POLLHUP)) && (n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
       int status = 0;
-      if (::waitpid(c.pid, &status, WNOHANG) != c.pid) continue;
+      const pid_t w = ::waitpid(c.pid, &status, WNOHANG);
+      if (w == 0) continue;  // still running
+      if (w < 0) status = 0x7f00;  // cannot be waited for (e.g. SIGCHLD ignored): give up on it, read what it wrote
       while ((n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
       ::close(c.fd);
       std::string line = c.buffer;

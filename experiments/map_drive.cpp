@@ -14,7 +14,7 @@ namespace toponav::experiments {
 double KnownSpaceIoU(const core::World& world, const mapping::MapView& map) {
   mapping::PolygonSet known;
   std::vector<mapping::PolygonSet> parts;
-  for (const auto& p : map.known_space) parts.push_back(mapping::PolygonSet::FromPolygon(p));
+  for (const auto& p : map.known_space) parts.push_back(mapping::PolygonSet::FromPolygon(p, /*check_simple=*/false));
   known = mapping::PolygonSet::JoinAll(parts);
   return mapping::IoU(known, mapping::PolygonSet::FromPolygon(core::FreeSpacePolygon(world)));
 }

@@ -20,7 +20,7 @@ double BuildingPlacementIoU(const core::World& world, const mapping::MapView& ma
   const auto& b = world.bounds;
   mapping::PolygonSet region = mapping::PolygonSet::FromRing({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}});
   std::vector<mapping::PolygonSet> known;
-  for (const auto& p : map.known_space) known.push_back(mapping::PolygonSet::FromPolygon(p));
+  for (const auto& p : map.known_space) known.push_back(mapping::PolygonSet::FromPolygon(p, /*check_simple=*/false));
   region.Difference(mapping::PolygonSet::JoinAll(known));
   std::vector<mapping::PolygonSet> buildings;
   for (const auto& o : world.obstacles) buildings.push_back(mapping::PolygonSet::FromRing(o));
@@ -63,7 +63,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     view = mapper.View();
     // Frontiers outside the search region (the office park's bounds) do not count.
     planning::PlannerOptions po = o.planner;
-    po.clearance = std::max(po.clearance, config.motion.agent_radius + 0.25);
+    po.clearance = std::min(std::max(po.clearance, config.motion.agent_radius + 0.25), 0.9 * po.inflation_radius);
     std::vector<planning::FrontierTarget> targets;
     for (const auto& t : planning::FrontierTargets(view, po))
       if ((!open_world || world.bounds.Contains(t.point)) && !given_up.count(t.frontier_id)) targets.push_back(t);
@@ -112,8 +112,8 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       r.explored = true;
       break;
     }
-    // A frontier some agent has stood next to for give_up_steps steps without it going away is given up
-    // (counted per frontier, so it holds however the team assignment shuffles).
+    // A frontier that agents have stood next to for give_up_steps steps in all (not necessarily in a row)
+    // without it going away is given up (counted per frontier, so it holds however the team shuffles).
     for (const auto& t : targets) {
       bool near = false;
       for (const auto& p : agents) near = near || core::Distance(p, t.point) < o.give_up_distance;

@@ -22,7 +22,8 @@ class PolygonSet {
   // A simple polygon (either orientation) or a polygon with holes (outer counter-clockwise, holes clockwise;
   // other orientations are fixed).  Throws core::DataError for fewer than 3 points or a non-simple ring.
   static PolygonSet FromRing(const core::Ring& ring);
-  static PolygonSet FromPolygon(const core::Polygon& polygon);
+  // 'check_simple' false accepts CGAL's own output back (its boundaries may touch themselves at a vertex).
+  static PolygonSet FromPolygon(const core::Polygon& polygon, bool check_simple = true);
 
   void Join(const PolygonSet& other);        // this = this ∪ other
   void Intersect(const PolygonSet& other);   // this = this ∩ other

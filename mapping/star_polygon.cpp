@@ -26,7 +26,10 @@ core::Ring StarPolygon(const Vec2& center, const std::vector<Vec2>& points) {
   std::vector<Polar> uniq;
   for (const auto& p : pts)
     if (uniq.empty() || p.angle - uniq.back().angle > 1e-12) uniq.push_back(p);
-  if (uniq.size() > 1 && uniq.front().angle + 2 * core::kPi - uniq.back().angle <= 1e-12) uniq.pop_back();
+  if (uniq.size() > 1 && uniq.front().angle + 2 * core::kPi - uniq.back().angle <= 1e-12) {
+    if (uniq.back().range < uniq.front().range) uniq.front() = uniq.back();  // same bearing across -pi/pi
+    uniq.pop_back();
+  }
   if (uniq.size() < 2) return {};
   core::Ring ring;
   for (size_t i = 0; i < uniq.size(); ++i) {

@@ -404,6 +404,8 @@ struct Mapper::Impl {
   static bool StarMeets(const Obs& ob, const Vec2& a, const Vec2& b) {
     if (ob.star.empty() || !BoxHitsSegment(ob.box, a, b, 1e-6)) return false;
     if (core::Contains(ob.star, a) || core::Contains(ob.star, b)) return true;
+    // The same boundary tolerance as Hypothetical(): a vertex on the polygon counts as inside.
+    if (core::DistanceToRing(a, ob.star) < 1e-6 || core::DistanceToRing(b, ob.star) < 1e-6) return true;
     for (size_t i = 0; i < ob.star.size(); ++i)
       if (core::SegmentsIntersect({a, b}, {ob.star[i], ob.star[(i + 1) % ob.star.size()]})) return true;
     return false;

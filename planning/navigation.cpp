@@ -265,6 +265,15 @@ std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const 
       take(a, best);
     }
   }
+  // An agent left with an unreachable frontier (fewer reachable frontiers than agents) takes its own cheapest
+  // reachable one, shared or not, rather than standing still.
+  for (size_t a = 0; a < agents.size(); ++a) {
+    if (out[a].status == PlanStatus::kFound) continue;
+    size_t best = targets.size();
+    for (size_t t = 0; t < targets.size(); ++t)
+      if (paths[a][t] && (best == targets.size() || cost(a, t) < cost(a, best))) best = t;
+    if (best < targets.size()) take(a, best);
+  }
   return out;
 }
 

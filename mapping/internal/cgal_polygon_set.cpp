@@ -20,11 +20,11 @@ struct PolygonSet::Impl {
 };
 
 namespace {
-CPolygon ToCgal(const core::Ring& ring, bool want_ccw) {
+CPolygon ToCgal(const core::Ring& ring, bool want_ccw, bool check_simple = true) {
   if (ring.size() < 3) throw core::DataError("<polygon>", "a polygon needs at least 3 points");
   CPolygon p;
   for (const auto& v : ring) p.push_back(CPoint(v.x, v.y));
-  if (!p.is_simple()) throw core::DataError("<polygon>", "polygon is not simple (self-intersecting)");
+  if (check_simple && !p.is_simple()) throw core::DataError("<polygon>", "polygon is not simple (self-intersecting)");
   if ((p.orientation() == CGAL::COUNTERCLOCKWISE) != want_ccw) p.reverse_orientation();
   return p;
 }
@@ -52,9 +52,9 @@ PolygonSet PolygonSet::FromRing(const core::Ring& ring) {
   return s;
 }
 
-PolygonSet PolygonSet::FromPolygon(const core::Polygon& polygon) {
-  CPolygonWithHoles pwh(ToCgal(polygon.outer, true));
-  for (const auto& h : polygon.holes) pwh.add_hole(ToCgal(h, false));
+PolygonSet PolygonSet::FromPolygon(const core::Polygon& polygon, bool check_simple) {
+  CPolygonWithHoles pwh(ToCgal(polygon.outer, true, check_simple));
+  for (const auto& h : polygon.holes) pwh.add_hole(ToCgal(h, false, check_simple));
   PolygonSet s;
   s.impl_->set.insert(pwh);
   return s;

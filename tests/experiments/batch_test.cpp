@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -19,7 +21,7 @@ Config TinyBench() {
 }
 
 std::string FreshDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("toponav_batch_" + name);
+  const fs::path d = fs::temp_directory_path() / ("toponav_batch_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(d);
   return d.string();
 }

@@ -126,8 +126,24 @@ TEST(Frontiers, TeamNeverSharesAFrontierWhileEnoughExist) {
   // Two frontiers for three agents: both are covered, the third agent doubles up.
   const auto two = AssignFrontiers(g, {targets[0], targets[1]}, {{17, 10}, {10, 17}, {3, 10}});
   std::set<int> two_ids;
-  for (const auto& c : two) two_ids.insert(c.frontier_id);
-  EXPECT_EQ(two_ids.size(), 2u);
+  for (const auto& c : two) {
+    EXPECT_EQ(c.status, PlanStatus::kFound);
+    two_ids.insert(c.frontier_id);
+  }
+  EXPECT_EQ(two_ids, (std::set<int>{1, 2}));
+}
+
+TEST(Frontiers, NoAgentIsLeftWithAnUnreachableFrontier) {
+  // Four frontiers, two of them behind a closed wall: three agents, every one gets a reachable frontier.
+  auto view = ThreeDoorRoom();
+  const VisibilityGraph g(view, {}, true);
+  auto targets = FrontierTargets(view, {});
+  targets.push_back({7, {50, 50}, 10.0});  // outside known space: unreachable when exploring
+  const auto choices = AssignFrontiers(g, targets, {{17, 10}, {17, 10.5}, {17, 9.5}, {10, 10}});
+  for (const auto& c : choices) {
+    EXPECT_EQ(c.status, PlanStatus::kFound);
+    EXPECT_NE(c.frontier_id, 7);
+  }
 }
 
 TEST(HSignature, ReverseCancelsAndALoopWindsOnce) {
