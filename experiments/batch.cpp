@@ -66,6 +66,8 @@ json RecordJson(const TrialId& id, const TrialResult* r, const std::string& erro
   j["nudges"] = r->nudges;
   j["end_reason"] = r->end_reason;
   j["wall_time_s"] = r->wall_time_s;
+  j["time_s"] = {{"observe_and_map", r->time_map_s}, {"mcmc", r->time_mcmc_s}, {"known_space", r->time_known_s},
+                 {"plan_and_move", r->time_plan_s}};
   return j;
 }
 
@@ -280,13 +282,17 @@ std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records) {
     row.successes += r.success;
     row.mean_steps += r.steps;
     row.mean_iou += r.iou;
+    row.mean_wall_s += r.wall_time_s;
+    row.ms_per_step += r.wall_time_s;  // divided by the steps below
   }
   std::vector<ReportRow> out;
   for (auto& [k, row] : rows) {
     const int ok = row.trials - row.failed;
     if (ok > 0) {
+      if (row.mean_steps > 0) row.ms_per_step = 1000.0 * row.ms_per_step / row.mean_steps;
       row.mean_steps /= ok;
       row.mean_iou /= ok;
+      row.mean_wall_s /= ok;
     }
     out.push_back(row);
   }
@@ -295,12 +301,12 @@ std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records) {
 
 std::string MarkdownTable(const std::vector<ReportRow>& rows) {
   std::ostringstream os;
-  os << "| environment | agents | success | mean steps | mean IoU | failed runs |\n";
-  os << "|---|---|---|---|---|---|\n";
+  os << "| environment | agents | success | mean steps | mean IoU | failed runs | s/trial | ms/step |\n";
+  os << "|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "| %s | %d | %d/%d | %.1f | %.4f | %d |\n", core::ToString(r.kind), r.agents,
-                  r.successes, r.trials, r.mean_steps, r.mean_iou, r.failed);
+    std::snprintf(buf, sizeof buf, "| %s | %d | %d/%d | %.1f | %.4f | %d | %.1f | %.1f |\n", core::ToString(r.kind),
+                  r.agents, r.successes, r.trials, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s, r.ms_per_step);
     os << buf;
   }
   return os.str();
@@ -308,10 +314,10 @@ std::string MarkdownTable(const std::vector<ReportRow>& rows) {
 
 std::string CsvTable(const std::vector<ReportRow>& rows) {
   std::ostringstream os;
-  os << "environment,agents,trials,successes,mean_steps,mean_iou,failed\n";
+  os << "environment,agents,trials,successes,mean_steps,mean_iou,failed,mean_wall_s,ms_per_step\n";
   for (const auto& r : rows)
     os << core::ToString(r.kind) << "," << r.agents << "," << r.trials << "," << r.successes << "," << r.mean_steps << ","
-       << r.mean_iou << "," << r.failed << "\n";
+       << r.mean_iou << "," << r.failed << "," << r.mean_wall_s << "," << r.ms_per_step << "\n";
   return os.str();
 }
 

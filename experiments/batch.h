@@ -67,6 +67,8 @@ struct ReportRow {
   int agents = 1;
   int trials = 0, successes = 0, failed = 0;
   double mean_steps = 0.0, mean_iou = 0.0;
+  double mean_wall_s = 0.0;   // per trial
+  double ms_per_step = 0.0;   // all trials' wall time over all their steps
 };
 std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records);
 std::string MarkdownTable(const std::vector<ReportRow>& rows);

@@ -113,6 +113,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   {
     YamlSection m = top.Section("motion");
     m.Read("step_length", &c.motion.step_length, 0.01, 50.0);
+    m.Read("open_world_step_length", &c.motion.open_world_step_length, 0.01, 50.0);
     m.Read("agent_radius", &c.motion.agent_radius, 0.25, 20.0);
     m.Read("substeps", &c.motion.substeps, 1, 1000);
     m.Finish();
@@ -165,6 +166,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("star_rebuild_tolerance", &o.star_rebuild_tolerance, 0.0, 100.0);
     r.Read("union_block", &o.union_block, 1, 100000);
     r.Read("frontier_wall_tolerance", &o.frontier_wall_tolerance, 0.0, 100.0);
+    r.Read("open_sample_step", &o.open_sample_step, 1e-3, 0.5);
     r.Finish();
   }
   {

@@ -12,10 +12,15 @@
 namespace toponav::experiments {
 
 double KnownSpaceIoU(const core::World& world, const mapping::MapView& map) {
+  // The exact set when the view has one; a view put together by hand only has the double-precision copy.
   mapping::PolygonSet known;
-  std::vector<mapping::PolygonSet> parts;
-  for (const auto& p : map.known_space) parts.push_back(mapping::PolygonSet::FromPolygon(p, /*check_simple=*/false));
-  known = mapping::PolygonSet::JoinAll(parts);
+  if (map.known_set) {
+    known = *map.known_set;
+  } else {
+    std::vector<mapping::PolygonSet> parts;
+    for (const auto& p : map.known_space) parts.push_back(mapping::PolygonSet::FromPolygon(p, /*check_simple=*/false));
+    known = mapping::PolygonSet::JoinAll(parts);
+  }
   return mapping::IoU(known, mapping::PolygonSet::FromPolygon(core::FreeSpacePolygon(world)));
 }
 
@@ -31,6 +36,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
 
   mapping::MapperOptions mo = config.mapping;
   mo.world_bounds = world.bounds;
+  if (!world.has_boundary()) mo.open_region = world.bounds;  // open world: its bounds are the search region
   if (o.mcmc_every <= 0) mo.defer_to_mcmc = false;  // without MCMC every vertex with enough detections is kept
   mapping::Mapper mapper(mo);
   auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(o.seed, 1));
@@ -59,7 +65,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
     std::vector<core::Vec2> rest(path.begin() + long(waypoint), path.end());
     const sim::StepResult s = motion.Step(agent, rest);
     r.agent_path.push_back(s.pose.position());
-    while (waypoint < path.size() && core::Distance(s.pose.position(), path[waypoint]) < 0.5 * config.motion.step_length)
+    while (waypoint < path.size() && core::Distance(s.pose.position(), path[waypoint]) < 0.5 * sim::StepLength(config.motion, world))
       ++waypoint;
     if (s.blocked) ++waypoint;  // skip a waypoint we cannot reach (clutter in the way)
     r.steps = step + 1;

@@ -1,6 +1,8 @@
 #include "experiments/trial.h"
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <map>
 #include <set>
@@ -19,9 +21,7 @@ using core::Vec2;
 double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map) {
   const auto& b = world.bounds;
   mapping::PolygonSet region = mapping::PolygonSet::FromRing({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}});
-  std::vector<mapping::PolygonSet> known;
-  for (const auto& p : map.known_space) known.push_back(mapping::PolygonSet::FromPolygon(p, /*check_simple=*/false));
-  region.Difference(mapping::PolygonSet::JoinAll(known));
+  if (map.known_set) region.Difference(*map.known_set);
   std::vector<mapping::PolygonSet> buildings;
   for (const auto& o : world.obstacles) buildings.push_back(mapping::PolygonSet::FromRing(o));
   return mapping::IoU(region, mapping::PolygonSet::JoinAll(buildings));
@@ -33,6 +33,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   TOPONAV_CHECK(o.num_agents >= 1, "num_agents " << o.num_agents);
   mapping::MapperOptions mo = config.mapping;
   mo.world_bounds = world.bounds;
+  if (!world.has_boundary()) mo.open_region = world.bounds;  // open world: its bounds are the search region
   mapping::Mapper mapper(mo);
   auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(seed, 1));
   core::Rng rng(core::DeriveSeed(seed, 2));
@@ -58,9 +59,18 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   std::map<int, int> near_steps;
   std::vector<int> committed(size_t(o.num_agents), -1);
   for (int step = 0; step < o.max_steps; ++step) {
+    using Clock = std::chrono::steady_clock;
+    auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+    const auto tk0 = Clock::now();
     for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(motion.Pose(a), a));
+    const auto tk1 = Clock::now();
     if (o.mcmc_every > 0 && (step % o.mcmc_every == 0)) mapper.SampleMostLikelyMap(rng);
+    const auto tk2 = Clock::now();
     view = mapper.View();
+    const auto tk3 = Clock::now();
+    r.time_map_s += seconds(tk0, tk1);
+    r.time_mcmc_s += seconds(tk1, tk2);
+    r.time_known_s += seconds(tk2, tk3);
     // Frontiers outside the search region (the office park's bounds) do not count.
     planning::PlannerOptions po = o.planner;
     po.clearance = std::min(std::max(po.clearance, config.motion.agent_radius + 0.25), 0.9 * po.inflation_radius);
@@ -125,11 +135,14 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       std::vector<Vec2> path;
       if (c.status == planning::PlanStatus::kFound) path.assign(c.path.points.begin() + 1, c.path.points.end());
       sim::StepResult s = motion.Step(a, path);
-      if (!path.empty() && s.distance < 0.1 * config.motion.step_length) {
+      // Stuck: a path but no motion, or no path at all while there are frontiers (the agent may stand
+      // where the map leaves it no way out; moving shows it more).
+      const bool no_way = c.status == planning::PlanStatus::kNoPath && !targets.empty();
+      if ((!path.empty() && s.distance < 0.1 * sim::StepLength(config.motion, world)) || no_way) {
         if (++still[size_t(a)] >= o.stuck_steps) {
           // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
           const double ang = rng.Uniform(-core::kPi, core::kPi);
-          s = motion.Nudge(a, Vec2{std::cos(ang), std::sin(ang)} * config.motion.step_length);
+          s = motion.Nudge(a, Vec2{std::cos(ang), std::sin(ang)} * sim::StepLength(config.motion, world));
           still[size_t(a)] = 0;
           ++r.nudges;
           ++stuck;
@@ -140,6 +153,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       r.distance[size_t(a)] += s.distance;
       r.paths[size_t(a)].push_back(s.pose.position());
     }
+    r.time_plan_s += seconds(tk3, Clock::now());
   }
   if (o.mcmc_every > 0) {
     mapper.SampleMostLikelyMap(rng);

@@ -36,6 +36,8 @@ struct TrialResult {
   int nudges = 0;                 // stuck-agent perturbations
   std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;
+  // Where the time went: observations and map updates, MCMC, known space and frontiers, planning and motion.
+  double time_map_s = 0.0, time_mcmc_s = 0.0, time_known_s = 0.0, time_plan_s = 0.0;
   std::vector<std::vector<core::Vec2>> paths;  // per agent
 };
 

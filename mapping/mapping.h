@@ -34,6 +34,11 @@ struct MapperOptions {
   int union_block = 16;                   // observations per cached partial union
   double frontier_wall_tolerance = 1.5;   // known-space boundary this close to a map wall is wall, not frontier
   std::optional<core::Aabb2> world_bounds;  // if set, observations from outside are rejected
+  // Open worlds (the office park): the search region.  Where the sensor's labels say no wall continues on
+  // either side of a gap between two detected vertices, the agent sees through it out to this region's edge
+  // (within max_range), so open ground becomes known; the region's edge is never a frontier.
+  std::optional<core::Aabb2> open_region;
+  double open_sample_step = 0.1;          // radians between the rays that trace such a gap's far side
   void Validate() const;                  // throws core::ConfigError ("mapping.association_gate_chi2", ...)
 };
 
@@ -62,7 +67,8 @@ struct MapView {
   std::vector<MapVertex> vertices;   // the map's vertices
   std::vector<MapVertex> rejected;   // vertices with enough detections that the posterior leaves out
   std::vector<MapWall> walls;        // walls between map vertices
-  std::vector<core::Polygon> known_space;
+  std::vector<core::Polygon> known_space;             // double-precision copy of known_set
+  std::shared_ptr<const PolygonSet> known_set;         // the exact known space (metrics use this, not a copy)
   std::vector<Frontier> frontiers;
   int num_observations = 0;
   double known_area() const;
@@ -113,6 +119,29 @@ class Mapper {
 // the center inserted wherever consecutive bearings are pi or more apart.  Points at the center or at the
 // same bearing as a nearer point are dropped.  Fewer than 2 usable points give an empty ring.
 core::Ring StarPolygon(const core::Vec2& center, const std::vector<core::Vec2>& points);
+
+// A point of an open star polygon: whether no wall continues from it counter-clockwise / clockwise (as seen
+// from the center), i.e. whether the sight line may pass it on that side.
+struct StarPoint {
+  core::Vec2 p;
+  bool open_ccw = false;
+  bool open_cw = false;
+};
+
+// What an open gap sees: the region (convex), a range limit, and walls that stop sight lines.
+struct OpenSpace {
+  core::Aabb2 region;
+  double max_range = 100.0;
+  double sample_step = 0.1;    // radians between rays
+  std::vector<core::Segment2> blockers;
+};
+
+// StarPolygon where a window between consecutive points A, B (by bearing) with A.open_ccw and B.open_cw is not
+// closed by the chord A-B but by rays out to the nearest of the region's edge, max_range and the blockers
+// (sampled every sample_step radians).  Bearings strictly increase along the ring, so it is simple.  If
+// 'hit' is given, it receives the indices of the blockers that stopped some ray (sorted, unique).
+core::Ring OpenStarPolygon(const core::Vec2& center, const std::vector<StarPoint>& points, const OpenSpace& space,
+                           std::vector<int>* hit = nullptr);
 
 // Minimum-cost one-to-one assignment of rows to columns (rows <= columns); returns the column of each row.
 std::vector<int> SolveAssignment(const std::vector<std::vector<double>>& cost);

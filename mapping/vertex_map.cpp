@@ -66,6 +66,9 @@ void MapperOptions::Validate() const {
   if (!(star_rebuild_tolerance >= 0)) fail("mapping.star_rebuild_tolerance", star_rebuild_tolerance, "must be >= 0");
   if (union_block < 1) fail("mapping.union_block", union_block, "must be >= 1");
   if (!(frontier_wall_tolerance >= 0)) fail("mapping.frontier_wall_tolerance", frontier_wall_tolerance, "must be >= 0");
+  if (!(open_sample_step > 0 && open_sample_step <= 0.5)) fail("mapping.open_sample_step", open_sample_step, "must be in (0, 0.5]");
+  if (open_region && !(open_region->max.x > open_region->min.x && open_region->max.y > open_region->min.y))
+    fail("mapping.open_region", open_region->width(), "must have a positive width and height");
 }
 
 struct Mapper::Impl {
@@ -89,6 +92,7 @@ struct Mapper::Impl {
     std::vector<Vec2> star_src;
     // Cached conservative known space S_c of this observation, with what it was built from.
     std::vector<int> sc_ids;
+    std::vector<uint64_t> sc_walls;  // open region: the map walls that bounded its hypothetical polygon
     PolygonSet sc;
     bool sc_valid = false;
   };
@@ -284,11 +288,113 @@ struct Mapper::Impl {
 
   // ------------------------------------------------------------ stars, hypothetical observations, posterior
 
+  // The star polygon of observation i's real detections at the vertices' current positions; in an open region
+  // the detections' labels say where sight passes a vertex (no wall on that side).
+  core::Ring RealStar(const Obs& ob) const {
+    std::vector<StarPoint> pts;
+    for (size_t k = 0; k < ob.vid.size(); ++k)
+      pts.push_back({Pos(ob.vid[k]), core::NoWallCcw(ob.det[k].labels) > 0.5, core::NoWallCw(ob.det[k].labels) > 0.5});
+    if (!o.open_region) {
+      for (auto& p : pts) p.open_ccw = p.open_cw = false;
+      return OpenStarPolygon(ob.pose.position(), pts, OpenSpace{});
+    }
+    return OpenStarPolygon(ob.pose.position(), pts, OpenSpace{*o.open_region, o.max_range, o.open_sample_step, {}});
+  }
+
+  // Open worlds: obstacles are closed polygons, so a chain of map walls that is still open (its last wall not
+  // seen well enough yet) is closed between its two ends for the sight lines of known space -- otherwise the
+  // hypothetical observation would see through the building to the chain's far vertices.  Planning and the
+  // posterior use the map's walls only.
+  std::vector<std::pair<int, int>> ClosingWalls(const MapState& ms) const {
+    std::vector<std::pair<int, int>> out;
+    if (!o.open_region) return out;
+    std::unordered_map<int, std::vector<int>> adj;
+    for (const auto& w : ms.walls) {
+      adj[w.first].push_back(w.second);
+      adj[w.second].push_back(w.first);
+    }
+    std::unordered_set<int> seen;
+    std::vector<int> ends;
+    for (const auto& [start, nb] : adj) {
+      if (nb.size() != 1 || seen.count(start)) continue;
+      // Walk the chain from this end; it is a simple chain if every inner vertex has two walls.
+      int prev = -1, cur = start, length = 0;
+      bool simple = true;
+      seen.insert(cur);
+      while (true) {
+        const auto& n = adj.at(cur);
+        int next = -1;
+        for (int x : n)
+          if (x != prev) next = x;
+        if (next < 0 || (prev >= 0 && n.size() != 2)) {
+          simple = simple && n.size() <= 2;
+          break;
+        }
+        if (n.size() > 2) {
+          simple = false;
+          break;
+        }
+        prev = cur;
+        cur = next;
+        ++length;
+        seen.insert(cur);
+        if (adj.at(cur).size() == 1) break;
+      }
+      if (simple && length >= 2 && adj.at(cur).size() == 1) out.push_back({std::min(start, cur), std::max(start, cur)});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The star polygon of a hypothetical observation H: in an open region, sight passes a mapped vertex on a side
+  // where the map has no wall, and rays stop at the map's walls (whose keys go to *hit_walls).
+  core::Ring HypotheticalStar(const Obs& ob, const std::vector<int>& H, const MapState& ms,
+                              const std::vector<std::pair<int, int>>& closing, std::vector<uint64_t>* hit_walls) const {
+    const Vec2 c = ob.pose.position();
+    hit_walls->clear();
+    std::unordered_map<int, std::vector<int>> extra;
+    for (const auto& w : closing) {
+      extra[w.first].push_back(w.second);
+      extra[w.second].push_back(w.first);
+    }
+    std::vector<StarPoint> pts;
+    for (int id : H) {
+      // Sight passes a map vertex on a side with no wall (map walls and closing walls).
+      StarPoint sp{Pos(id), bool(o.open_region), bool(o.open_region)};
+      std::vector<int> others;
+      for (int j : neighbours[size_t(id)])
+        if (ms.HasWall(id, j)) others.push_back(j);
+      if (const auto it = extra.find(id); it != extra.end()) others.insert(others.end(), it->second.begin(), it->second.end());
+      for (int j : others) {
+        const double side = core::Cross(sp.p - c, Pos(j) - sp.p);
+        if (side >= 0) sp.open_ccw = false;
+        if (side <= 0) sp.open_cw = false;
+      }
+      pts.push_back(sp);
+    }
+    if (!o.open_region) return OpenStarPolygon(c, pts, OpenSpace{});
+    OpenSpace space{*o.open_region, o.max_range, o.open_sample_step, {}};
+    const core::Aabb2 reach{c - Vec2{o.max_range, o.max_range}, c + Vec2{o.max_range, o.max_range}};
+    std::vector<uint64_t> keys;
+    for (const auto* list : {&ms.walls, &closing})
+      for (const auto& w : *list)
+        if (BoxHitsSegment(reach, Pos(w.first), Pos(w.second), 0.0)) {
+          space.blockers.push_back({Pos(w.first), Pos(w.second)});
+          keys.push_back(WallKey(w.first, w.second) ^ (list == &closing ? (uint64_t(1) << 63) : 0));
+        }
+    std::vector<int> hit;
+    core::Ring ring = OpenStarPolygon(c, pts, space, &hit);
+    for (int k : hit) hit_walls->push_back(keys[size_t(k)]);
+    // The polygon also depends on which sides of each vertex are open: part of what it was built from.
+    for (const auto& p : pts) hit_walls->push_back((uint64_t(0xF) << 60) | (uint64_t(p.open_ccw) << 1) | uint64_t(p.open_cw));
+    return ring;
+  }
+
   void RefreshStar(size_t i) {
     Obs& ob = obs[i];
     std::vector<Vec2> pts;
     for (int id : ob.vid) pts.push_back(Pos(id));
-    ob.star = StarPolygon(ob.pose.position(), pts);
+    ob.star = RealStar(ob);
     ob.star_src = pts;
     ob.box = ob.star.empty() ? core::Aabb2{ob.pose.position(), ob.pose.position()} : core::Bounds(ob.star);
     ob.box = core::Bounds(std::vector<Vec2>{ob.pose.position()}, ob.box);
@@ -317,11 +423,13 @@ struct Mapper::Impl {
 
   // The hypothetical observation of observation i (paper Sec. III-B; vertexnav.md §2.6): mapped vertices in
   // range, inside or on the real observation's star polygon, not hidden by a mapped wall; by bearing.
-  std::vector<int> Hypothetical(const Obs& ob, const MapState& ms) const {
+  std::vector<int> Hypothetical(const Obs& ob, const MapState& ms,
+                                const std::vector<std::pair<int, int>>& extra_walls = {}) const {
     const Vec2 p = ob.pose.position();
     std::vector<std::pair<int, int>> near_walls;
-    for (const auto& w : ms.walls)
-      if (BoxHitsSegment(ob.box, Pos(w.first), Pos(w.second), 1e-6)) near_walls.push_back(w);
+    for (const auto* list : {&ms.walls, &extra_walls})
+      for (const auto& w : *list)
+        if (BoxHitsSegment(ob.box, Pos(w.first), Pos(w.second), 1e-6)) near_walls.push_back(w);
     std::vector<std::pair<double, int>> h;
     auto consider = [&](int id, bool on_star) {
       const Vec2 x = Pos(id);
@@ -499,7 +607,11 @@ struct Mapper::Impl {
   // directly; one that shrank forces the union to be rebuilt from the cached per-block unions.
   void UpdateKnownSpace() const {
     const MapState& ms = ViewMap();
-    const auto& mw = ms.walls;
+    const std::vector<std::pair<int, int>> closing = ClosingWalls(ms);
+    std::vector<std::pair<int, int>> mw = ms.walls;  // what sight lines stop at
+    mw.insert(mw.end(), closing.begin(), closing.end());
+    std::sort(mw.begin(), mw.end());
+    mw.erase(std::unique(mw.begin(), mw.end()), mw.end());
     // What changed since the last update: vertices that entered or left the map or drifted farther than the
     // tolerance since they were last flagged, and walls that entered or left the map.
     std::vector<int> changed_vertices;
@@ -518,6 +630,7 @@ struct Mapper::Impl {
                                   std::back_inserter(changed_walls));
     snap_walls = mw;
     bool rebuild = false;
+    std::vector<PolygonSet> grown;  // new pieces that only add to the known space
     for (size_t i = 0; i < obs.size(); ++i) {
       Obs& ob = const_cast<Obs&>(obs[i]);
       bool check = !ob.sc_valid;
@@ -526,18 +639,21 @@ struct Mapper::Impl {
       for (size_t k = 0; k < changed_walls.size() && !check; ++k)
         check = BoxHitsSegment(ob.box, Pos(changed_walls[k].first), Pos(changed_walls[k].second), 1e-6);
       if (!check) continue;
-      const std::vector<int> H = Hypothetical(ob, ms);
+      const std::vector<int> H = Hypothetical(ob, ms, closing);
       bool moved = false;  // a vertex of this S_c got a new known-space position
       for (int id : ob.sc_ids) moved = moved || std::find(changed_vertices.begin(), changed_vertices.end(), id) != changed_vertices.end();
-      if (ob.sc_valid && ob.sc_ids == H && !moved) continue;
-      std::vector<Vec2> hyp, real;
-      for (int id : H) hyp.push_back(Pos(id));
-      for (int id : ob.vid) real.push_back(Pos(id));
-      const core::Ring sh = StarPolygon(ob.pose.position(), hyp), sz = StarPolygon(ob.pose.position(), real);
+      std::vector<uint64_t> hit_walls;
+      const core::Ring sh = HypotheticalStar(ob, H, ms, closing, &hit_walls);
+      if (ob.sc_valid && ob.sc_ids == H && ob.sc_walls == hit_walls && !moved) continue;
+      const core::Ring sz = RealStar(ob);
       PolygonSet sc;
       if (!sh.empty() && !sz.empty()) {
-        sc = PolygonSet::FromRing(sz);
-        sc.Intersect(PolygonSet::FromRing(sh));
+        try {
+          sc = PolygonSet::FromRing(sz);
+          sc.Intersect(PolygonSet::FromRing(sh));
+        } catch (const core::DataError&) {
+          sc = PolygonSet();  // a degenerate polygon adds nothing (the conservative choice)
+        }
       }
       bool grew = true;  // a new S_c, or one that contains the old one: joining it is enough
       if (ob.sc_valid && !ob.sc.empty()) {
@@ -546,16 +662,23 @@ struct Mapper::Impl {
         grew = lost.empty();
       }
       if (grew && total_valid) {
-        if (!sc.empty()) total.Join(sc);
+        if (!sc.empty()) grown.push_back(sc);
       } else {
         rebuild = true;
       }
       ob.sc = std::move(sc);
       ob.sc_ids = H;
+      ob.sc_walls = std::move(hit_walls);
       ob.sc_valid = true;
       block_dirty[i / size_t(o.union_block)] = 1;
     }
-    if (!rebuild && total_valid) return;
+    if (!rebuild && total_valid) {
+      if (!grown.empty()) {  // one sweep joins them all
+        grown.push_back(std::move(total));
+        total = PolygonSet::JoinAll(grown);
+      }
+      return;
+    }
     std::vector<PolygonSet> parts;
     for (size_t b = 0; b < blocks.size(); ++b) {
       if (block_dirty[b]) {
@@ -582,11 +705,22 @@ struct Mapper::Impl {
       }
       return false;
     };
+    // The open region's edge is where the search ends, not where unknown space begins.
+    auto on_region_edge = [&](const Vec2& a, const Vec2& b) {
+      if (!o.open_region) return false;
+      const auto& r = *o.open_region;
+      constexpr double tol = 1e-3;
+      return (std::abs(a.x - r.min.x) < tol && std::abs(b.x - r.min.x) < tol) ||
+             (std::abs(a.x - r.max.x) < tol && std::abs(b.x - r.max.x) < tol) ||
+             (std::abs(a.y - r.min.y) < tol && std::abs(b.y - r.min.y) < tol) ||
+             (std::abs(a.y - r.max.y) < tol && std::abs(b.y - r.max.y) < tol);
+    };
     std::vector<Frontier> out;
     auto walk = [&](const core::Ring& ring) {
       const size_t n = ring.size();
       std::vector<char> free_edge(n);
-      for (size_t i = 0; i < n; ++i) free_edge[i] = !on_wall(ring[i], ring[(i + 1) % n]);
+      for (size_t i = 0; i < n; ++i)
+        free_edge[i] = !on_wall(ring[i], ring[(i + 1) % n]) && !on_region_edge(ring[i], ring[(i + 1) % n]);
       // Start at a wall edge so chains do not wrap (a ring with no wall is one closed frontier).
       size_t start = 0;
       while (start < n && free_edge[start]) ++start;
@@ -686,6 +820,7 @@ MapView Mapper::View() const {
   }
   for (const auto& [a, b] : ms.walls) view.walls.push_back({a, b, m.Pos(a), m.Pos(b), m.WallProb(a, b)});
   view.known_space = m.total.Polygons();
+  view.known_set = std::make_shared<const PolygonSet>(m.total);
   view.frontiers = m.Frontiers(view.known_space);
   view.num_observations = int(m.obs.size());
   return view;

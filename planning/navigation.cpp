@@ -125,6 +125,17 @@ bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b, bool relax_a, bool rel
     if (core::SegmentDistance(inner, w) < options_.clearance) return false;
     if ((relax_a || relax_b) && core::SegmentsIntersect(s, w)) return false;
   }
+  return StaysKnown(a, b);
+}
+
+bool VisibilityGraph::ClearLoose(const Vec2& a, const Vec2& b) const {
+  for (const auto& w : walls_)
+    if (core::SegmentsIntersect({a, b}, w)) return false;
+  return StaysKnown(a, b);
+}
+
+bool VisibilityGraph::StaysKnown(const Vec2& a, const Vec2& b) const {
+  const core::Segment2 s{a, b};
   if (require_known_) {
     // Inside known space: the midpoint is inside and the segment crosses no known-space boundary edge.
     if (!InKnown(*view_, (a + b) * 0.5)) return false;
@@ -156,12 +167,28 @@ std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vect
   std::vector<Vec2> pts = nodes_;
   pts.push_back(start);
   pts.insert(pts.end(), goals.begin(), goals.end());
+  // An end that a map wall has come too close to (a wall estimate that moved, an agent pushed against a
+  // wall) still connects by segments that cross no wall, so an agent can always get away from a wall.
+  bool start_linked = false;
   for (int i = 0; i < n; ++i)
-    if (Clear(start, pts[size_t(i)], true, false)) g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
+    if (Clear(start, pts[size_t(i)], true, false)) {
+      g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
+      start_linked = true;
+    }
+  if (!start_linked)
+    for (int i = 0; i < n; ++i)
+      if (ClearLoose(start, pts[size_t(i)])) g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
   for (size_t k = 0; k < goals.size(); ++k) {
     const int gi = n + 1 + int(k);
+    bool linked = false;
     for (int i = 0; i <= n; ++i)
-      if (Clear(goals[k], pts[size_t(i)], true, i == n)) g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
+      if (Clear(goals[k], pts[size_t(i)], true, i == n)) {
+        g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
+        linked = true;
+      }
+    if (!linked)
+      for (int i = 0; i <= n; ++i)
+        if (ClearLoose(goals[k], pts[size_t(i)])) g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
   }
   std::vector<Path> out(goals.size());
   for (size_t k = 0; k < goals.size(); ++k) {

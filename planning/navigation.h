@@ -44,6 +44,9 @@ class VisibilityGraph {
   // the clearance to a wall (agents and targets do), the rest of the segment may not.
   bool Clear(const core::Vec2& a, const core::Vec2& b) const;
   bool Clear(const core::Vec2& a, const core::Vec2& b, bool relax_a, bool relax_b) const;
+  // Crosses no wall (no clearance asked) and, if known space is required, stays in it.
+  bool ClearLoose(const core::Vec2& a, const core::Vec2& b) const;
+  bool StaysKnown(const core::Vec2& a, const core::Vec2& b) const;
 
  private:
   const mapping::MapView* view_;

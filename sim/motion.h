@@ -11,10 +11,14 @@ namespace toponav::sim {
 
 struct MotionOptions {
   double step_length = 1.8;    // world units travelled per agent step along the path (when unobstructed)
+  double open_world_step_length = 3.6;  // the same in open worlds (the reference's outdoor primitive length)
   double agent_radius = 1.0;   // world units
   int substeps = 12;           // physics sub-steps per agent step
   void Validate() const;       // throws core::ConfigError
 };
+
+// The step length agents use in 'world' (open worlds take the longer outdoor step).
+double StepLength(const MotionOptions& options, const core::World& world);
 
 struct StepResult {
   core::Pose2 pose;             // after the step; yaw faces the direction of travel

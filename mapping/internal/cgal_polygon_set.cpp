@@ -26,6 +26,9 @@ CPolygon ToCgal(const core::Ring& ring, bool want_ccw, bool check_simple = true)
   for (const auto& v : ring) p.push_back(CPoint(v.x, v.y));
   if (check_simple && !p.is_simple()) throw core::DataError("<polygon>", "polygon is not simple (self-intersecting)");
   if ((p.orientation() == CGAL::COUNTERCLOCKWISE) != want_ccw) p.reverse_orientation();
+  // The Boolean operations' own validity test (they crash, not throw, on input that fails it).
+  if (check_simple && want_ccw && !CGAL::is_valid_polygon(p, CPolygonSet::Traits_2()))
+    throw core::DataError("<polygon>", "polygon is not valid for exact Booleans (degenerate edges)");
   return p;
 }
 core::Ring ToRing(const CPolygon& p) {
@@ -65,10 +68,24 @@ void PolygonSet::Intersect(const PolygonSet& o) { impl_->set.intersection(o.impl
 void PolygonSet::Difference(const PolygonSet& o) { impl_->set.difference(o.impl_->set); }
 
 PolygonSet PolygonSet::JoinAll(const std::vector<PolygonSet>& sets) {
-  std::vector<CPolygonWithHoles> all;
-  for (const auto& s : sets) s.impl_->set.polygons_with_holes(std::back_inserter(all));
+  // Pairwise joins in a balanced tree: each is an overlay of two arrangements.  (Re-inserting the sets'
+  // polygons with holes into one aggregated join crashes inside CGAL 5.5 when a boundary touches itself at a
+  // vertex, which the sets' own output may do.)
+  std::vector<CPolygonSet> level;
+  for (const auto& s : sets)
+    if (!s.impl_->set.is_empty()) level.push_back(s.impl_->set);
   PolygonSet out;
-  if (!all.empty()) out.impl_->set.join(all.begin(), all.end());
+  if (level.empty()) return out;
+  while (level.size() > 1) {
+    std::vector<CPolygonSet> next;
+    for (size_t i = 0; i + 1 < level.size(); i += 2) {
+      next.push_back(std::move(level[i]));
+      next.back().join(level[i + 1]);
+    }
+    if (level.size() % 2) next.push_back(std::move(level.back()));
+    level = std::move(next);
+  }
+  out.impl_->set = std::move(level[0]);
   return out;
 }
 

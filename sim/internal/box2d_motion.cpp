@@ -37,6 +37,8 @@ void MotionOptions::Validate() const {
     throw core::ConfigError("<options>", key, std::to_string(v), why);
   };
   if (!(step_length > 0 && step_length <= 50)) fail("motion.step_length", step_length, "must be in (0, 50]");
+  if (!(open_world_step_length > 0 && open_world_step_length <= 50))
+    fail("motion.open_world_step_length", open_world_step_length, "must be in (0, 50]");
   if (!(agent_radius >= 0.25 && agent_radius <= 20)) fail("motion.agent_radius", agent_radius, "must be in [0.25, 20]");
   if (!(substeps >= 1 && substeps <= 1000)) fail("motion.substeps", substeps, "must be in [1, 1000]");
 }
@@ -76,10 +78,15 @@ struct MotionSim::Impl {
   }
 };
 
+double StepLength(const MotionOptions& options, const core::World& world) {
+  return world.has_boundary() ? options.step_length : options.open_world_step_length;
+}
+
 MotionSim::MotionSim(const core::World& world, const MotionOptions& options) : impl_(std::make_unique<Impl>()) {
   options.Validate();
   Impl& m = *impl_;
   m.options = options;
+  m.options.step_length = StepLength(options, world);
   m.world = world;
   m.b2world = std::make_unique<b2World>(b2Vec2(0.0f, 0.0f));
   b2BodyDef def;

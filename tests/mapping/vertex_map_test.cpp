@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "mapping/mapping.h"
+#include "mapping/polygon_set.h"
 #include "tests/testing/worlds.h"
 
 namespace toponav::mapping {
@@ -146,6 +147,76 @@ TEST(StarPolygon, InsertsTheCentreAcrossWideGapsAndDropsHiddenPoints) {
   const core::Ring square = StarPolygon({0, 0}, {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}, {2, 2}});  // (2,2) is behind (1,1)
   EXPECT_EQ(square.size(), 4u);
   EXPECT_NEAR(core::SignedArea(square), 4.0, 1e-12);
+}
+
+TEST(OpenStarPolygon, OpenGapsReachTheRegionEdgeAndClosedOnesAreChords) {
+  const core::Aabb2 region{{-10, -10}, {10, 10}};
+  // A and B 90 degrees apart above the centre, C below.
+  std::vector<StarPoint> pts{{{2, 2}, true, false}, {{-2, 2}, false, true}, {{0, -2}, false, false}};
+  const core::Ring open = OpenStarPolygon({0, 0}, pts, OpenSpace{region, 100.0, 0.1, {}});
+  ASSERT_FALSE(open.empty());
+  EXPECT_TRUE(core::IsSimple(open));
+  EXPECT_TRUE(core::Contains(open, {0, 9.5})) << "sight through the gap reaches the region's edge";
+  EXPECT_FALSE(core::Contains(open, {0, 10.5}));
+  // Same points, no open sides: the plain star polygon (the chord closes the gap).
+  for (auto& p : pts) p.open_ccw = p.open_cw = false;
+  const core::Ring closed = OpenStarPolygon({0, 0}, pts, OpenSpace{region, 100.0, 0.1, {}});
+  EXPECT_FALSE(core::Contains(closed, {0, 3}));
+  EXPECT_NEAR(core::SignedArea(closed), core::SignedArea(StarPolygon({0, 0}, {{2, 2}, {-2, 2}, {0, -2}})), 1e-12);
+}
+
+TEST(OpenStarPolygon, RangeAndBlockersStopSightLines) {
+  const core::Aabb2 region{{-50, -50}, {50, 50}};
+  const std::vector<StarPoint> pts{{{2, 2}, true, false}, {{-2, 2}, false, true}, {{0, -2}, false, false}};
+  const core::Ring ranged = OpenStarPolygon({0, 0}, pts, OpenSpace{region, 6.0, 0.05, {}});
+  EXPECT_TRUE(core::Contains(ranged, {0, 5.5}));
+  EXPECT_FALSE(core::Contains(ranged, {0, 6.5})) << "no farther than max_range";
+  std::vector<int> hit;
+  const core::Ring blocked = OpenStarPolygon({0, 0}, pts, OpenSpace{region, 100.0, 0.05, {{{-30, 5}, {1, 5}}}}, &hit);
+  EXPECT_TRUE(core::Contains(blocked, {-1, 4.5}));
+  EXPECT_FALSE(core::Contains(blocked, {-1, 5.5})) << "a blocker stops the rays behind it";
+  EXPECT_FALSE(core::Contains(blocked, {0.9, 5.1})) << "the corner at the blocker's end is kept";
+  EXPECT_TRUE(core::Contains(blocked, {5, 20})) << "rays past the blocker's end go on";
+  EXPECT_EQ(hit, (std::vector<int>{0}));
+  // A blocker inside the triangle under a closed chord cuts it too.
+  const std::vector<StarPoint> closed{{{4, 4}, false, false}, {{-4, 4}, false, false}, {{0, -4}, false, false}};
+  const core::Ring clipped = OpenStarPolygon({0, 0}, closed, OpenSpace{region, 100.0, 0.05, {{{-1, 2}, {1, 2}}}});
+  EXPECT_FALSE(core::Contains(clipped, {0, 3}));
+  EXPECT_TRUE(core::Contains(clipped, {0, 1.5}));
+  EXPECT_TRUE(core::Contains(clipped, {3, 3.5}));
+}
+
+// A square building [-5,5] x [0,10] in an open region, seen from below: its front corners, labelled with the
+// wall on their building side.
+TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
+  MapperOptions o;
+  o.world_bounds = core::Aabb2{{-50, -50}, {50, 50}};
+  o.open_region = o.world_bounds;
+  Mapper m(o);
+  core::Rng rng(3);
+  for (int i = 0; i < 20; ++i) {
+    const core::Pose2 pose{-3.0 + 0.3 * i, -20, 0.0};
+    m.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
+  }
+  m.SampleMostLikelyMap(rng);
+  const MapView view = m.View();
+  ASSERT_EQ(view.walls.size(), 1u);
+  ASSERT_TRUE(view.known_set);
+  EXPECT_TRUE(view.known_set->Contains({20, 20})) << "open ground beside the building is seen";
+  EXPECT_TRUE(view.known_set->Contains({0, -40}));
+  EXPECT_FALSE(view.known_set->Contains({0, 5})) << "the building's inside is not";
+  for (const auto& f : view.frontiers)
+    for (const auto& p : f.points) EXPECT_TRUE(std::abs(p.x) < 49.99 || std::abs(p.y) < 49.99) << "the region's edge is no frontier";
+  // Without the open region only the fans between the two corners are known.
+  MapperOptions closed = o;
+  closed.open_region.reset();
+  Mapper c(closed);
+  for (int i = 0; i < 20; ++i) {
+    const core::Pose2 pose{-3.0 + 0.3 * i, -20, 0.0};
+    c.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
+  }
+  c.SampleMostLikelyMap(rng);
+  EXPECT_FALSE(c.View().known_set->Contains({20, 20}));
 }
 
 TEST(SolveAssignment, FindsTheMinimumCostOneToOneAssignment) {
