@@ -11,17 +11,15 @@
 
 namespace toponav::experiments {
 
+mapping::PolygonSet KnownSet(const mapping::MapView& map) {
+  if (map.known_set) return *map.known_set;
+  std::vector<mapping::PolygonSet> parts;
+  for (const auto& p : map.known_space) parts.push_back(mapping::PolygonSet::FromPolygon(p, /*check_simple=*/false));
+  return mapping::PolygonSet::JoinAll(parts);
+}
+
 double KnownSpaceIoU(const core::World& world, const mapping::MapView& map) {
-  // The exact set when the view has one; a view put together by hand only has the double-precision copy.
-  mapping::PolygonSet known;
-  if (map.known_set) {
-    known = *map.known_set;
-  } else {
-    std::vector<mapping::PolygonSet> parts;
-    for (const auto& p : map.known_space) parts.push_back(mapping::PolygonSet::FromPolygon(p, /*check_simple=*/false));
-    known = mapping::PolygonSet::JoinAll(parts);
-  }
-  return mapping::IoU(known, mapping::PolygonSet::FromPolygon(core::FreeSpacePolygon(world)));
+  return mapping::IoU(KnownSet(map), mapping::PolygonSet::FromPolygon(core::FreeSpacePolygon(world)));
 }
 
 MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& o) {

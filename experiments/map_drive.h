@@ -8,6 +8,7 @@
 #include "core/world.h"
 #include "experiments/config.h"
 #include "mapping/mapping.h"
+#include "mapping/polygon_set.h"
 
 namespace toponav::experiments {
 
@@ -36,6 +37,10 @@ struct MapDriveResult {
 constexpr double kVertexMatchRadius = 5.0;
 
 MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& options);
+
+// The map's known space as an exact set: the view's own when it has one; a view put together by hand only
+// has the double-precision polygons.
+mapping::PolygonSet KnownSet(const mapping::MapView& map);
 
 // Intersection over union of the map's known space and the world's true free space (map walls only).
 double KnownSpaceIoU(const core::World& world, const mapping::MapView& map);

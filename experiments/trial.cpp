@@ -21,7 +21,7 @@ using core::Vec2;
 double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map) {
   const auto& b = world.bounds;
   mapping::PolygonSet region = mapping::PolygonSet::FromRing({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}});
-  if (map.known_set) region.Difference(*map.known_set);
+  region.Difference(KnownSet(map));
   std::vector<mapping::PolygonSet> buildings;
   for (const auto& o : world.obstacles) buildings.push_back(mapping::PolygonSet::FromRing(o));
   return mapping::IoU(region, mapping::PolygonSet::JoinAll(buildings));
@@ -39,6 +39,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   core::Rng rng(core::DeriveSeed(seed, 2));
   sim::MotionSim motion(world, config.motion);
   const bool open_world = !world.has_boundary();
+  const double step_length = sim::StepLength(config.motion, world);
   TrialResult r;
   r.seed = seed;
   r.num_agents = o.num_agents;
@@ -138,11 +139,11 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       // Stuck: a path but no motion, or no path at all while there are frontiers (the agent may stand
       // where the map leaves it no way out; moving shows it more).
       const bool no_way = c.status == planning::PlanStatus::kNoPath && !targets.empty();
-      if ((!path.empty() && s.distance < 0.1 * sim::StepLength(config.motion, world)) || no_way) {
+      if ((!path.empty() && s.distance < 0.1 * step_length) || no_way) {
         if (++still[size_t(a)] >= o.stuck_steps) {
           // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
           const double ang = rng.Uniform(-core::kPi, core::kPi);
-          s = motion.Nudge(a, Vec2{std::cos(ang), std::sin(ang)} * sim::StepLength(config.motion, world));
+          s = motion.Nudge(a, Vec2{std::cos(ang), std::sin(ang)} * step_length);
           still[size_t(a)] = 0;
           ++r.nudges;
           ++stuck;

@@ -37,6 +37,16 @@ std::vector<Polar> SortedByBearing(const Vec2& center, const std::vector<StarPoi
   return uniq;
 }
 
+// Distance along the unit direction d from c to the segment a-b, whose ends may be missed by 'slack' (as a
+// fraction of its length); infinity if the ray misses it or runs parallel to it.
+double RayToSegment(const Vec2& c, const Vec2& d, const Vec2& a, const Vec2& b, double slack) {
+  const Vec2 e = b - a, w = a - c;
+  const double den = d.x * e.y - d.y * e.x;
+  if (std::abs(den) < 1e-15) return std::numeric_limits<double>::infinity();
+  const double t = (w.x * e.y - w.y * e.x) / den, u = (w.x * d.y - w.y * d.x) / den;
+  return t > 0 && u >= -slack && u <= 1 + slack ? t : std::numeric_limits<double>::infinity();
+}
+
 // Distance along the unit direction d from c to the nearest of the box's edge, max_range and the blockers;
 // *which = the blocker that is nearest (or -1).
 double RayReach(const Vec2& c, const Vec2& d, const OpenSpace& s, int* which) {
@@ -50,25 +60,13 @@ double RayReach(const Vec2& c, const Vec2& d, const OpenSpace& s, int* which) {
   }
   *which = -1;
   for (size_t k = 0; k < s.blockers.size(); ++k) {
-    const Vec2 e = s.blockers[k].b - s.blockers[k].a, w = s.blockers[k].a - c;
-    const double den = d.x * e.y - d.y * e.x;
-    if (std::abs(den) < 1e-15) continue;
-    const double tk = (w.x * e.y - w.y * e.x) / den, u = (w.x * d.y - w.y * d.x) / den;
-    if (tk > 1e-9 && tk < t && u >= 0 && u <= 1) {
+    const double tk = RayToSegment(c, d, s.blockers[k].a, s.blockers[k].b, 0.0);
+    if (tk > 1e-9 && tk < t) {
       t = tk;
       *which = int(k);
     }
   }
   return t;
-}
-
-// Distance along the unit direction d from c to the segment a-b (infinity if the ray misses it).
-double RayToSegment(const Vec2& c, const Vec2& d, const Vec2& a, const Vec2& b) {
-  const Vec2 e = b - a, w = a - c;
-  const double den = d.x * e.y - d.y * e.x;
-  if (std::abs(den) < 1e-15) return std::numeric_limits<double>::infinity();
-  const double t = (w.x * e.y - w.y * e.x) / den, u = (w.x * d.y - w.y * d.x) / den;
-  return t > 0 && u >= -1e-9 && u <= 1 + 1e-9 ? t : std::numeric_limits<double>::infinity();
 }
 
 // True if a blocker enters the triangle c-a-b (touching it only at a or b does not count).
@@ -110,6 +108,10 @@ core::Ring OpenStarPolygon(const Vec2& center, const std::vector<StarPoint>& poi
     for (const Vec2& q : {b.min, Vec2{b.max.x, b.min.y}, b.max, Vec2{b.min.x, b.max.y}})
       if (core::Distance(q, center) > 1e-9) corners.push_back(std::atan2(q.y - center.y, q.x - center.x));
   }
+  std::vector<double> ends;  // bearings of the blockers' ends
+  for (const auto& b : space.blockers)
+    for (const Vec2& e : {b.a, b.b})
+      if (core::Distance(e, center) >= 1e-9) ends.push_back(std::atan2(e.y - center.y, e.x - center.x));
   constexpr double kEdge = 1e-4;  // the first and last rays of a window leave this far inside it
   core::Ring ring;
   for (size_t i = 0; i < uniq.size(); ++i) {
@@ -136,14 +138,10 @@ core::Ring OpenStarPolygon(const Vec2& center, const std::vector<StarPoint>& poi
           if (w > lo) rays.push_back(w);
     // Where a blocker ends inside the window the traced boundary turns a corner: rays just either side of
     // its end keep that corner (sampled rays alone would cut across it).
-    for (const auto& b : space.blockers)
-      for (const Vec2& e : {b.a, b.b}) {
-        if (core::Distance(e, center) < 1e-9) continue;
-        const double c = std::atan2(e.y - center.y, e.x - center.x);
-        for (double w = c; w < hi + 1e-6; w += 2 * core::kPi)
-          for (double side : {-1e-5, 1e-5})
-            if (w + side > lo && w + side < hi) rays.push_back(w + side);
-      }
+    for (double c : ends)
+      for (double w = c; w < hi + 1e-6; w += 2 * core::kPi)
+        for (double side : {-1e-5, 1e-5})
+          if (w + side > lo && w + side < hi) rays.push_back(w + side);
     std::sort(rays.begin(), rays.end());
     rays.erase(std::unique(rays.begin(), rays.end(), [](double x, double y) { return y - x < 1e-9; }), rays.end());
     int added = 0;  // ray points of this window so far
@@ -152,7 +150,7 @@ core::Ring OpenStarPolygon(const Vec2& center, const std::vector<StarPoint>& poi
       int which = -1;
       double t = RayReach(center, d, space, &which);
       if (clipped) {
-        const double chord = RayToSegment(center, d, uniq[i].s.p, next_p);
+        const double chord = RayToSegment(center, d, uniq[i].s.p, next_p, 1e-9);
         if (chord <= t) {
           t = chord;
           which = -1;
