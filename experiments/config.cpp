@@ -116,6 +116,9 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     m.Read("open_world_step_length", &c.motion.open_world_step_length, 0.01, 50.0);
     m.Read("agent_radius", &c.motion.agent_radius, 0.25, 20.0);
     m.Read("substeps", &c.motion.substeps, 1, 1000);
+    m.Read("avoid_margin", &c.motion.avoid_margin, 0.0, 10.0);
+    m.Read("avoid_window", &c.motion.avoid_window, 1.0, 100.0);
+    m.Read("avoid_cell", &c.motion.avoid_cell, 0.05, 5.0);
     m.Finish();
   }
   {
@@ -158,6 +161,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("min_detections", &o.min_detections, 1, 1000);
     r.Read("wall_threshold", &o.wall_threshold, 0.01, 0.99);
     r.Read("wall_skip_damping", &o.wall_skip_damping, 0.0, 1.0);
+    r.Read("wall_on_segment_tolerance", &o.wall_on_segment_tolerance, 0.0, 100.0);
     r.Read("edge_log_floor", &o.edge_log_floor, -100.0, -1e-6);
     r.Read("mcmc_samples", &o.mcmc_samples, 0, 100000);
     r.Read("mcmc_window", &o.mcmc_window, 1, 1000000);

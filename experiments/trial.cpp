@@ -139,7 +139,12 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       // Stuck: a path but no motion, or no path at all while there are frontiers (the agent may stand
       // where the map leaves it no way out; moving shows it more).
       const bool no_way = c.status == planning::PlanStatus::kNoPath && !targets.empty();
-      if ((!path.empty() && s.distance < 0.1 * step_length) || no_way) {
+      // ... or a path but no headway over the last few steps (pacing back and forth in front of something).
+      const auto& trail = r.paths[size_t(a)];
+      const size_t window = size_t(2 * o.stuck_steps);
+      const bool pacing = !path.empty() && trail.size() > window &&
+                          core::Distance(trail[trail.size() - window], s.pose.position()) < step_length;
+      if ((!path.empty() && s.distance < 0.1 * step_length) || no_way || pacing) {
         if (++still[size_t(a)] >= o.stuck_steps) {
           // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
           const double ang = rng.Uniform(-core::kPi, core::kPi);

@@ -24,6 +24,9 @@ struct MapperOptions {
   int min_detections = 3;                 // a vertex needs this many detections to enter a map
   double wall_threshold = 0.5;            // a wall exists when its averaged likelihood exceeds this
   double wall_skip_damping = 0.2;         // evidence for detections k apart is scaled by this^(k-1)
+  double wall_on_segment_tolerance = 2.0;  // ... not counting detections within this distance of the segment
+                                          // between them whose vertex is not in the map (a false detection on
+                                          // the wall); 0: count all (the reference)
   double edge_log_floor = -1.386;         // log 0.25: an edge term never costs more than this
   int mcmc_samples = 50;                  // proposals per SampleMostLikelyMap call (the paper's 50)
   int mcmc_window = 45;                   // proposals flip vertices seen in this many latest observations

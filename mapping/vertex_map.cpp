@@ -59,6 +59,7 @@ void MapperOptions::Validate() const {
   if (min_detections < 1) fail("mapping.min_detections", min_detections, "must be >= 1");
   if (!(wall_threshold > 0 && wall_threshold < 1)) fail("mapping.wall_threshold", wall_threshold, "must be in (0, 1)");
   if (!(wall_skip_damping >= 0 && wall_skip_damping <= 1)) fail("mapping.wall_skip_damping", wall_skip_damping, "must be in [0, 1]");
+  if (!(wall_on_segment_tolerance >= 0)) fail("mapping.wall_on_segment_tolerance", wall_on_segment_tolerance, "must be >= 0");
   if (!(edge_log_floor < 0)) fail("mapping.edge_log_floor", edge_log_floor, "must be < 0");
   if (mcmc_samples < 0) fail("mapping.mcmc_samples", mcmc_samples, "must be >= 0");
   if (mcmc_window < 1) fail("mapping.mcmc_window", mcmc_window, "must be >= 1");
@@ -109,6 +110,8 @@ struct Mapper::Impl {
   MapperOptions o;
   std::vector<Vertex> v;
   std::unordered_map<uint64_t, WallStats> walls;
+  std::vector<char> evidence_mapped;         // the map membership wall evidence was computed with
+  std::vector<std::vector<int>> vertex_obs;  // vertex -> observations that detected it
   std::vector<std::vector<int>> neighbours;  // vertex -> vertices it shares wall evidence with
   std::vector<Obs> obs;
   mutable std::vector<PolygonSet> blocks;
@@ -261,29 +264,77 @@ struct Mapper::Impl {
         ob.vid[k] = int(v.size()) - 1;
       }
     }
-    // Wall evidence: every pair less than pi apart, R = i and L = j counter-clockwise of it; detections
-    // between them scale the evidence by wall_skip_damping each (vertexnav.md §2.4).
-    for (size_t i = 0; i < n; ++i)
-      for (size_t s = 1; s < n; ++s) {
-        const size_t j = (i + s) % n;
-        if (Wrap2Pi(ob.det[j].bearing - ob.det[i].bearing) >= core::kPi) break;
-        const int a = ob.vid[i], b = ob.vid[j];
-        if (a == b) continue;
-        const double q = 1.0 - 0.5 * (core::NoWallCcw(ob.det[i].labels) + core::NoWallCw(ob.det[j].labels));
-        WallStats& w = walls[WallKey(a, b)];
-        if (w.count == 0) {
-          neighbours[size_t(a)].push_back(b);
-          neighbours[size_t(b)].push_back(a);
-        }
-        w.sum += std::pow(o.wall_skip_damping, double(s - 1)) * q;
-        w.count += 1;
-      }
+    evidence_mapped.resize(v.size(), 0);
+    vertex_obs.resize(v.size());
+    for (int id : ob.vid)
+      if (vertex_obs[size_t(id)].empty() || vertex_obs[size_t(id)].back() != int(obs.size()))
+        vertex_obs[size_t(id)].push_back(int(obs.size()));
+    AddWallEvidence(ob, evidence_mapped, 1.0, true);
     obs.push_back(std::move(ob));
     RefreshStar(obs.size() - 1);
     if (blocks.size() * size_t(o.union_block) < obs.size()) {
       blocks.emplace_back();
       block_dirty.push_back(1);
     }
+  }
+
+  // Wall evidence of one observation: every pair less than pi apart, R = i and L = j counter-clockwise of
+  // it; each detection between them scales the evidence by wall_skip_damping (vertexnav.md §2.4) -- except,
+  // beyond the reference, a detection lying on the segment between the two (within wall_on_segment_tolerance)
+  // whose vertex is not in the map ('mapped'): a false detection on a wall does not say the wall is missing,
+  // while a mapped vertex on the line (a doorway's jamb) still does.  'sign' -1 takes back what +1 added;
+  // 'count' adds the sighting itself.
+  void AddWallEvidence(const Obs& ob, const std::vector<char>& mapped, double sign, bool count) {
+    const size_t n = ob.det.size();
+    std::vector<Vec2> at(n);
+    for (size_t k = 0; k < n; ++k) at[k] = core::DetectionPosition(ob.pose, ob.det[k]);
+    auto ignorable = [&](size_t k, const Vec2& a, const Vec2& b) {
+      const int id = ob.vid[k];
+      if (o.wall_on_segment_tolerance <= 0 || (size_t(id) < mapped.size() && mapped[size_t(id)])) return false;
+      const Vec2 d = b - a;
+      const double len2 = core::Dot(d, d);
+      if (len2 < 1e-12) return false;
+      const double t = core::Dot(at[k] - a, d) / len2;
+      return t > 0 && t < 1 && std::abs(core::Cross(d, at[k] - a)) / std::sqrt(len2) < o.wall_on_segment_tolerance;
+    };
+    for (size_t i = 0; i < n; ++i) {
+      for (size_t s = 1; s < n; ++s) {
+        const size_t j = (i + s) % n;
+        if (Wrap2Pi(ob.det[j].bearing - ob.det[i].bearing) >= core::kPi) break;
+        const int a = ob.vid[i], b = ob.vid[j];
+        if (a == b) continue;
+        int between = 0;
+        for (size_t t = 1; t < s; ++t) between += !ignorable((i + t) % n, at[i], at[j]);
+        const double q = 1.0 - 0.5 * (core::NoWallCcw(ob.det[i].labels) + core::NoWallCw(ob.det[j].labels));
+        WallStats& w = walls[WallKey(a, b)];
+        if (w.count == 0 && count) {
+          neighbours[size_t(a)].push_back(b);
+          neighbours[size_t(b)].push_back(a);
+        }
+        w.sum += sign * std::pow(o.wall_skip_damping, double(between)) * q;
+        if (count) w.count += 1;
+      }
+    }
+  }
+
+  // Brings wall evidence up to date with the map's vertices (only observations that saw a vertex that
+  // entered or left the map since the last sync are redone).
+  void SyncWallEvidence() {
+    if (o.wall_on_segment_tolerance <= 0) return;
+    std::vector<char> now(v.size());
+    for (size_t i = 0; i < v.size(); ++i) now[i] = Mapped(int(i));
+    evidence_mapped.resize(v.size(), 0);
+    vertex_obs.resize(v.size());
+    std::vector<int> redo;
+    for (size_t i = 0; i < v.size(); ++i)
+      if (now[i] != evidence_mapped[i]) redo.insert(redo.end(), vertex_obs[i].begin(), vertex_obs[i].end());
+    std::sort(redo.begin(), redo.end());
+    redo.erase(std::unique(redo.begin(), redo.end()), redo.end());
+    for (int k : redo) {
+      AddWallEvidence(obs[size_t(k)], evidence_mapped, -1.0, false);
+      AddWallEvidence(obs[size_t(k)], now, 1.0, false);
+    }
+    evidence_mapped = std::move(now);
   }
 
   // ------------------------------------------------------------ stars, hypothetical observations, posterior
@@ -536,6 +587,7 @@ struct Mapper::Impl {
 
   double Sample(core::Rng& rng) {
     RefreshStars();
+    SyncWallEvidence();
     // Candidates: vertices with enough detections seen in the recent window of observations.
     std::vector<int> cand;
     {
@@ -594,6 +646,7 @@ struct Mapper::Impl {
       }
     }
     for (size_t k = 0; k < v.size(); ++k) v[k].in_map = best_state[k];
+    SyncWallEvidence();
     FreezeViewMap();
     return LogPosterior();
   }

@@ -14,6 +14,13 @@ struct MotionOptions {
   double open_world_step_length = 3.6;  // the same in open worlds (the reference's outdoor primitive length)
   double agent_radius = 1.0;   // world units
   int substeps = 12;           // physics sub-steps per agent step
+  // Local obstacle avoidance (the robot's own range sensing, which sees clutter the map leaves out): when the
+  // straight step would pass closer than agent_radius + avoid_margin to a wall or clutter, the agent plans
+  // on a local grid (avoid_window around it, avoid_cell cells) to the point of its path that best trades
+  // detour for progress, and steps along that.  avoid_margin 0 turns it off.
+  double avoid_margin = 0.3;
+  double avoid_window = 12.0;  // half-width of the local grid, world units
+  double avoid_cell = 0.5;     // world units
   void Validate() const;       // throws core::ConfigError
 };
 
@@ -25,6 +32,7 @@ struct StepResult {
   double distance = 0.0;        // actually travelled
   bool blocked = false;         // travelled less than half of what was asked
   bool reached_end = false;     // the last waypoint is reached
+  bool avoided = false;         // turned aside from the path to keep clear of an obstacle
 };
 
 class MotionSim {
@@ -41,7 +49,8 @@ class MotionSim {
   core::Pose2 Pose(int agent) const;
 
   // Moves 'agent' up to step_length along the polyline 'waypoints' (starting from its position toward
-  // waypoints[0], then on), sliding along whatever it touches.  An empty path leaves it in place.
+  // waypoints[0], then on), turning aside from what is in the way (avoid_margin) and sliding along whatever
+  // it still touches.  An empty path leaves it in place.
   StepResult Step(int agent, const std::vector<core::Vec2>& waypoints);
 
   // Moves 'agent' by 'offset' (as far as collisions allow): used to perturb a stuck agent.

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
 
 #include "core/error.h"
 #include "sim/motion.h"
@@ -41,6 +44,10 @@ void MotionOptions::Validate() const {
     fail("motion.open_world_step_length", open_world_step_length, "must be in (0, 50]");
   if (!(agent_radius >= 0.25 && agent_radius <= 20)) fail("motion.agent_radius", agent_radius, "must be in [0.25, 20]");
   if (!(substeps >= 1 && substeps <= 1000)) fail("motion.substeps", substeps, "must be in [1, 1000]");
+  if (!(avoid_margin >= 0 && avoid_margin <= 10)) fail("motion.avoid_margin", avoid_margin, "must be in [0, 10]");
+  if (!(avoid_window >= 1 && avoid_window <= 100)) fail("motion.avoid_window", avoid_window, "must be in [1, 100]");
+  if (!(avoid_cell >= 0.05 && avoid_cell <= 5)) fail("motion.avoid_cell", avoid_cell, "must be in [0.05, 5]");
+  if (avoid_window / avoid_cell > 400) fail("motion.avoid_cell", avoid_cell, "gives more than 400 cells across avoid_window");
 }
 
 struct MotionSim::Impl {
@@ -75,6 +82,100 @@ struct MotionSim::Impl {
     r.pose = {to.x, to.y, yaws[size_t(agent)]};
     r.blocked = r.distance < 0.5 * core::Distance(from, target);
     return r;
+  }
+
+  // Smallest clearance (signed distance to walls and clutter) at points along from -> to, 'from' excluded.
+  double Clearance(const Vec2& from, const Vec2& to) const {
+    const double len = core::Distance(from, to);
+    const int n = std::max(2, int(std::ceil(len / 0.25)));
+    double d = std::numeric_limits<double>::infinity();
+    for (int i = 1; i <= n; ++i) d = std::min(d, core::SignedDistance(world, from + (to - from) * (double(i) / n)));
+    return d;
+  }
+
+  // Where to head next along 'path' (pos, then the waypoints) without brushing an obstacle: 'target' (the
+  // point one step along the path) if the straight line there keeps the clearance; else the point one step
+  // along the shortest route on a local grid to the path point that best trades detour for progress.  An agent already closer than the clearance may move along or away, never closer.
+  Vec2 AvoidingTarget(const std::vector<Vec2>& path, const Vec2& target, double step, bool* turned) const {
+    *turned = false;
+    const Vec2 pos = path.front();
+    if (options.avoid_margin <= 0 || core::Distance(pos, target) < 1e-9) return target;
+    const double need = std::min(options.agent_radius + options.avoid_margin, core::SignedDistance(world, pos) - 0.02);
+    if (Clearance(pos, target) >= need) return target;
+    // Local grid centred on the agent; Dijkstra over free cells (8-neighbour moves).
+    const double h = options.avoid_cell;
+    const int half = int(std::ceil(options.avoid_window / h)), n = 2 * half + 1;
+    auto cell_of = [&](const Vec2& p, int* i, int* j) {
+      *i = int(std::lround((p.x - pos.x) / h)) + half;
+      *j = int(std::lround((p.y - pos.y) / h)) + half;
+      return *i >= 0 && *j >= 0 && *i < n && *j < n;
+    };
+    auto centre = [&](int i, int j) { return Vec2{pos.x + (i - half) * h, pos.y + (j - half) * h}; };
+    std::vector<signed char> free(size_t(n) * n, -1);  // -1 not yet tested
+    auto is_free = [&](int i, int j) {
+      signed char& f = free[size_t(j) * n + i];
+      if (f < 0) f = core::SignedDistance(world, centre(i, j)) >= need ? 1 : 0;
+      return f == 1;
+    };
+    std::vector<double> dist(size_t(n) * n, std::numeric_limits<double>::infinity());
+    std::vector<int> parent(size_t(n) * n, -1);
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+    const int s0 = half * n + half;
+    dist[size_t(s0)] = 0;
+    open.push({0.0, s0});
+    while (!open.empty()) {
+      const auto [d, c] = open.top();
+      open.pop();
+      if (d > dist[size_t(c)]) continue;
+      const int ci = c % n, cj = c / n;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const int i = ci + di, j = cj + dj;
+          if ((di == 0 && dj == 0) || i < 0 || j < 0 || i >= n || j >= n || !is_free(i, j)) continue;
+          // Diagonal moves must not squeeze between two blocked cells.
+          if (di != 0 && dj != 0 && (!is_free(ci + di, cj) || !is_free(ci, cj + dj))) continue;
+          const double nd = d + h * std::sqrt(double(di * di + dj * dj));
+          const int k = j * n + i;
+          if (nd < dist[size_t(k)]) {
+            dist[size_t(k)] = nd;
+            parent[size_t(k)] = c;
+            open.push({nd, k});
+          }
+        }
+    }
+    // The path point (sampled every half cell, inside the grid) minimizing grid route - 2 x arc length (a
+    // detour is worth the progress it buys; the route can never be shorter than the path itself).
+    int best = -1;
+    double best_cost = std::numeric_limits<double>::infinity(), s = 0;
+    for (size_t w = 1; w < path.size(); ++w) {
+      const double len = core::Distance(path[w - 1], path[w]);
+      const int m = std::max(1, int(std::ceil(len / (0.5 * h))));
+      for (int q = 1; q <= m; ++q) {
+        const Vec2 p = path[w - 1] + (path[w] - path[w - 1]) * (double(q) / m);
+        int i, j;
+        if (!cell_of(p, &i, &j)) continue;
+        const double c = dist[size_t(j) * n + i] - 2.0 * (s + len * q / m);
+        if (c < best_cost) {
+          best_cost = c;
+          best = j * n + i;
+        }
+      }
+      s += len;
+    }
+    if (best < 0 || best == s0) return target;  // boxed in: push on and let the physics slide
+    std::vector<int> route{best};
+    while (route.back() != s0) route.push_back(parent[size_t(route.back())]);
+    std::reverse(route.begin(), route.end());
+    // One step along the route (straight from the agent to a route cell it can reach with the clearance).
+    Vec2 aim = centre(route[1] % n, route[1] / n);
+    for (size_t k = 1; k < route.size(); ++k) {
+      const Vec2 p = centre(route[k] % n, route[k] / n);
+      if (dist[size_t(route[k])] > step + 1e-9 || Clearance(pos, p) < need) break;
+      aim = p;
+    }
+    *turned = true;
+    return aim;
   }
 };
 
@@ -177,7 +278,12 @@ StepResult MotionSim::Step(int agent, const std::vector<Vec2>& waypoints) {
     budget -= d;
     cur = w;
   }
-  StepResult r = m.MoveToward(agent, target);
+  bool turned = false;
+  std::vector<Vec2> path{pos};
+  path.insert(path.end(), waypoints.begin(), waypoints.end());
+  const Vec2 aim = m.AvoidingTarget(path, target, m.options.step_length, &turned);
+  StepResult r = m.MoveToward(agent, aim);
+  r.avoided = turned;
   r.reached_end = reaches_end && core::Distance(r.pose.position(), waypoints.back()) < 0.05 * m.options.step_length + 1e-9;
   return r;
 }

@@ -88,6 +88,48 @@ TEST(Mapper, InjectedFalsePositivesAreRejectedAndPosteriorDoesNotDrop) {
   for (const auto& v : view.vertices) EXPECT_TRUE(std::abs(v.position.x - 5) > 4 && std::abs(v.position.y - 5) > 4);
 }
 
+// The square room seen from inside, each observation with one false detection somewhere on the wall y = 0
+// (a new place every time, so none gathers enough detections to become a map vertex).
+MapView SquareWithFalseDetectionsOnAWall(double on_segment_tolerance) {
+  MapperOptions o = SquareOptions();
+  o.wall_on_segment_tolerance = on_segment_tolerance;
+  Mapper m(o);
+  core::Rng rng(5);
+  for (int i = 0; i < 30; ++i) {
+    const core::Pose2 pose{5 + 0.03 * i, 5, 0.0};
+    Observation z = SquareFromInside(pose);
+    z.detections.push_back(Det(pose, {1.0 + 0.27 * i, 0.0}, core::VertexLabel::kPoint));
+    std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
+    m.AddObservation(z);
+    if (i % 5 == 4) m.SampleMostLikelyMap(rng);
+  }
+  m.SampleMostLikelyMap(rng);
+  return m.View();
+}
+
+bool HasWall(const MapView& view, Vec2 a, Vec2 b) {
+  for (const auto& w : view.walls)
+    if ((core::Distance(w.pa, a) < 0.5 && core::Distance(w.pb, b) < 0.5) ||
+        (core::Distance(w.pa, b) < 0.5 && core::Distance(w.pb, a) < 0.5))
+      return true;
+  return false;
+}
+
+TEST(Mapper, FalseDetectionsOnAWallDoNotHideIt) {
+  const MapView view = SquareWithFalseDetectionsOnAWall(2.0);
+  EXPECT_EQ(view.vertices.size(), 4u);
+  EXPECT_TRUE(HasWall(view, {0, 0}, {10, 0}));
+  EXPECT_EQ(view.walls.size(), 4u);
+  EXPECT_TRUE(view.frontiers.empty());
+}
+
+TEST(Mapper, CountingEveryDetectionBetweenCornersLosesTheWall) {
+  // The reference's rule (tolerance 0): each detection between two corners damps their wall's evidence.
+  const MapView view = SquareWithFalseDetectionsOnAWall(0.0);
+  EXPECT_FALSE(HasWall(view, {0, 0}, {10, 0}));
+  EXPECT_EQ(view.walls.size(), 3u);
+}
+
 TEST(Mapper, TwoDetectionsOfOneObservationNeverJoinOneVertex) {
   Mapper m(SquareOptions());
   const core::Pose2 pose{0, 0, 0};

@@ -46,6 +46,30 @@ TEST(MotionSim, WallBlocksAndAgentStopsOutsideIt) {
   EXPECT_GE(r.pose.x, 20.0 - 1.0 - 0.2);
 }
 
+// A box of clutter (which the map never holds) right on the planned line, hugging a wall as the
+// labyrinth's clutter does: the agent must get past it to the waypoint beyond.
+int StepsPastClutter(const MotionOptions& options) {
+  core::World w = testing::RoomWorld(50, 50);
+  w.clutter.push_back({core::ClutterShape::kBox, {25, 3.0}, 1.5, 0.3, 2.25});
+  MotionSim sim(w, options);
+  const int a = sim.AddAgent({10, 3.5, 0});
+  for (int step = 1; step <= 60; ++step)
+    if (sim.Step(a, {{40, 3.5}}).reached_end) return step;
+  return -1;
+}
+
+TEST(MotionSim, AgentSteersAroundClutterOnItsPath) {
+  const int steps = StepsPastClutter({});
+  EXPECT_GT(steps, 0) << "the agent never got past the box";
+  EXPECT_LE(steps, 25) << "30 units at 1.8 a step plus a short detour";
+}
+
+TEST(MotionSim, WithoutAvoidanceClutterOnThePathStopsTheAgent) {
+  MotionOptions options;
+  options.avoid_margin = 0;
+  EXPECT_EQ(StepsPastClutter(options), -1);
+}
+
 TEST(MotionSim, AgentsNeverEnterObstaclesOverThousandRandomSteps) {
   for (auto kind : {core::WorldKind::kLabyrinth, core::WorldKind::kOfficePark, core::WorldKind::kGuidedMaze}) {
     const core::World w = GenerateWorld(kind, {}, 11);
