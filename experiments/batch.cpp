@@ -83,13 +83,20 @@ json RecordJson(const TrialId& id, const TrialResult* r, const std::string& erro
     t.max_steps = config.bench.max_steps;
     t.mcmc_every = config.bench.mcmc_every;
     t.planner = config.planning;
+    std::string name = id.Key();
+    std::replace(name.begin(), name.end(), '/', '_');
+    std::unique_ptr<TrialVideo> video;
+    if (config.bench.videos) {
+      const fs::path dir = fs::path(o.out_dir) / "videos";
+      fs::create_directories(dir);
+      video = std::make_unique<TrialVideo>(w, config.picture, (dir / (name + ".mp4")).string());
+      t.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video->AddFrame(v, paths); };
+    }
     mapping::MapView view;
     const TrialResult r = RunSearchTrial(w, config, t, id.seed, &view);
     if (config.bench.pictures) {
       const fs::path dir = fs::path(o.out_dir) / "pictures";
       fs::create_directories(dir);
-      std::string name = id.Key();
-      std::replace(name.begin(), name.end(), '/', '_');
       DrawMapPicture(w, view, r.paths, config.picture, (dir / (name + ".png")).string());
     }
     line = RecordJson(id, &r, "").dump();

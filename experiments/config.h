@@ -38,6 +38,7 @@ struct BenchOptions {
   int max_steps = 400;
   int mcmc_every = 5;
   bool pictures = true;          // a final PNG per trial
+  bool videos = false;           // an MP4 of every trial (videos/<row>_s<seed>.mp4; slow: one frame a step)
 };
 
 struct PictureOptions {

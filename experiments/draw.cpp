@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "core/error.h"
 
@@ -62,6 +64,7 @@ class Canvas {
   Vec2 origin_;
 };
 
+const cv::Scalar kAgentColours[] = {cv::Scalar(220, 90, 20), cv::Scalar(30, 160, 30), cv::Scalar(160, 40, 170)};
 const cv::Scalar kFree(250, 250, 250), kWall(20, 20, 20), kObstacle(150, 150, 150), kGuide(60, 190, 60);
 const cv::Scalar kBox(40, 90, 160), kCylinder(190, 120, 40), kTree(40, 140, 40), kStart(220, 90, 20),
     kGoal(40, 40, 220), kRegion(235, 245, 235);
@@ -158,10 +161,8 @@ void DrawWorldPicture(const core::World& world, const PictureOptions& options, c
   c.Save(png_path);
 }
 
-void DrawMapPicture(const core::World& world, const mapping::MapView& map,
-                    const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
-                    const std::string& png_path) {
-  Canvas c(world, options);
+void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
+              const std::vector<std::vector<core::Vec2>>& agent_paths) {
   c.image.setTo(cv::Scalar(200, 200, 200));  // unknown
   for (const auto& poly : map.known_space) {
     std::vector<std::vector<cv::Point>> rings{c.Px(poly.outer)};
@@ -169,7 +170,6 @@ void DrawMapPicture(const core::World& world, const mapping::MapView& map,
     cv::fillPoly(c.image, rings, cv::Scalar(252, 252, 252), cv::LINE_AA);
   }
   for (const core::Ring* r : core::MapRings(world)) c.Outline(*r, cv::Scalar(170, 170, 170), 1);  // true walls
-  static const cv::Scalar kAgentColours[] = {cv::Scalar(220, 90, 20), cv::Scalar(30, 160, 30), cv::Scalar(160, 40, 170)};
   for (size_t a = 0; a < agent_paths.size(); ++a) {
     std::vector<cv::Point> pts;
     for (const auto& p : agent_paths[a]) pts.push_back(c.Px(p));
@@ -187,7 +187,56 @@ void DrawMapPicture(const core::World& world, const mapping::MapView& map,
   for (const auto& w : map.walls) cv::line(c.image, c.Px(w.pa), c.Px(w.pb), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
   for (const auto& v : map.vertices) cv::circle(c.image, c.Px(v.position), 3, cv::Scalar(0, 0, 0), cv::FILLED, cv::LINE_AA);
   for (const auto& v : map.rejected) cv::circle(c.image, c.Px(v.position), 4, cv::Scalar(0, 0, 230), 2, cv::LINE_AA);
+  for (size_t a = 0; a < agent_paths.size(); ++a)
+    if (!agent_paths[a].empty()) cv::circle(c.image, c.Px(agent_paths[a].back()), c.Len(1.0) + 2, kAgentColours[a % 3], cv::FILLED, cv::LINE_AA);
+}
+
+void DrawMapPicture(const core::World& world, const mapping::MapView& map,
+                    const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
+                    const std::string& png_path) {
+  Canvas c(world, options);
+  PaintMap(c, world, map, agent_paths);
   c.Save(png_path);
+}
+
+struct TrialVideo::Impl {
+  core::World world;
+  PictureOptions options;
+  std::string path;
+  cv::VideoWriter writer;
+  cv::Size size;
+};
+
+TrialVideo::TrialVideo(const core::World& world, const PictureOptions& options, const std::string& path, double fps)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->world = world;
+  impl_->options = options;
+  impl_->path = path;
+  const std::string ext = std::filesystem::path(path).extension().string();
+  int fourcc = 0;
+  if (ext == ".mp4") fourcc = cv::VideoWriter::fourcc('m', 'p', '4', 'v');
+  else if (ext == ".avi") fourcc = cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
+  else throw core::DataError(path, "a trial video must be .mp4 or .avi, not '" + ext + "'");
+  Canvas c(world, options);
+  impl_->size = {c.image.cols + (c.image.cols % 2), c.image.rows + (c.image.rows % 2)};  // even sides for codecs
+  bool ok = false;
+  try {
+    ok = impl_->writer.open(path, fourcc, fps, impl_->size, true);
+  } catch (const cv::Exception& e) {
+    throw core::DataError(path, std::string("cannot open the video: ") + e.what());
+  }
+  if (!ok) throw core::DataError(path, "cannot open the video (no OpenCV video backend for " + ext + "?)");
+}
+
+TrialVideo::~TrialVideo() = default;
+
+void TrialVideo::AddFrame(const mapping::MapView& map, const std::vector<std::vector<core::Vec2>>& agent_paths) {
+  Canvas c(impl_->world, impl_->options);
+  PaintMap(c, impl_->world, map, agent_paths);
+  cv::Mat frame(impl_->size, CV_8UC3, cv::Scalar(70, 70, 70));
+  c.image.copyTo(frame(cv::Rect(0, 0, c.image.cols, c.image.rows)));
+  impl_->writer.write(frame);
+  ++frames_;
 }
 
 void DrawObservationPicture(const core::World& world, const core::Pose2& pose,

@@ -1,5 +1,6 @@
 #pragma once
 // Top-down pictures (PNG).  North is up; one world unit is PictureOptions::pixels_per_unit pixels.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,23 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
 void DrawMapPicture(const core::World& world, const mapping::MapView& map,
                     const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
                     const std::string& png_path);
+
+// A video of a trial, one DrawMapPicture-style frame (plus each agent's position) per AddFrame: MP4 ('.mp4',
+// MPEG-4 part 2) or Motion-JPEG AVI ('.avi').  Throws core::DataError naming the file if it cannot be opened.
+class TrialVideo {
+ public:
+  TrialVideo(const core::World& world, const PictureOptions& options, const std::string& path, double fps = 15.0);
+  ~TrialVideo();
+  TrialVideo(const TrialVideo&) = delete;
+  TrialVideo& operator=(const TrialVideo&) = delete;
+  void AddFrame(const mapping::MapView& map, const std::vector<std::vector<core::Vec2>>& agent_paths);
+  int frames() const { return frames_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int frames_ = 0;
+};
 
 // A panorama as a PNG (RGB), its depth as a grey PNG (near bright, 'max_depth' and beyond black), or K
 // panoramas stacked top to bottom with a caption on each (a contact sheet).

@@ -303,6 +303,7 @@ int RunMap(MapArgs a) {
 
 struct TrialArgs : WorldSource {
   std::string out = "results/trial";
+  std::string video;
   experiments::TrialOptions trial;
 };
 
@@ -313,7 +314,13 @@ int RunTrialCommand(const TrialArgs& a) {
   mapping::MapView view;
   experiments::TrialOptions t = a.trial;
   t.planner = cfg.planning;
+  std::unique_ptr<experiments::TrialVideo> video;
+  if (!a.video.empty()) {
+    video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
+    t.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video->AddFrame(v, paths); };
+  }
   const auto r = experiments::RunSearchTrial(w, cfg, t, a.seed, &view);
+  if (video) fmt::print("wrote {} ({} frames)\n", a.video, video->frames());
   experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string());
   double total = 0;
   for (double d : r.distance) total += d;
@@ -461,11 +468,12 @@ int main(int argc, char** argv) {
   map->add_option("--out", ma.out, "Output directory: map.png and map.json")->capture_default_str();
 
   TrialArgs ta;
-  auto* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers (experimental until the search benchmark lands)");
+  auto* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers");
   AddWorldSourceOptions(trial, &ta, "YAML config (sensor:, mapping:, motion:)");
   trial->add_option("--agents", ta.trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
   trial->add_option("--max-steps", ta.trial.max_steps, "Step cap")->capture_default_str()->check(CLI::Range(1, 100000));
   trial->add_option("--out", ta.out, "Output directory: trial.png")->capture_default_str();
+  trial->add_option("--video", ta.video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
 
   BenchArgs ba;
   auto* bench = app.add_subcommand("bench", "Run a search benchmark (paper Table I): trials in parallel processes, "

@@ -160,6 +160,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       r.paths[size_t(a)].push_back(s.pose.position());
     }
     r.time_plan_s += seconds(tk3, Clock::now());
+    if (o.on_step) o.on_step(view, r.paths);
   }
   if (o.mcmc_every > 0) {
     mapper.SampleMostLikelyMap(rng);

@@ -3,6 +3,7 @@
 // the observations join one map, MCMC runs on its cadence, the planner sends each agent towards a frontier
 // (a team to distinct frontiers), and agents move one step.  A trial is a pure function of its spec.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct TrialOptions {
   double give_up_distance = 4.0;  // an agent this close to its frontier target ...
   int give_up_steps = 10;       // ... for this many steps without the frontier going away gives it up
   planning::PlannerOptions planner;
+  // Called after every step with the map the planners used and the agents' paths so far (videos).
+  std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
 };
 
 struct TrialResult {

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include "core/error.h"
+#include "experiments/draw.h"
 #include "sim/worlds.h"
 
 namespace toponav::experiments {
@@ -28,6 +32,36 @@ TEST(SearchTrial, SmallWorldIsFullyExploredByOneAndByThreeAgents) {
       EXPECT_TRUE(r.success);
       EXPECT_EQ(int(r.distance.size()), agents);
     }
+  }
+}
+
+TEST(TrialVideo, HasOneFramePerStepOfTheTrial) {
+  const Config cfg;
+  const core::World w = SmallLabyrinth(101);
+  const std::string path = (std::filesystem::temp_directory_path() / "toponav_trial_video_test.mp4").string();
+  std::filesystem::remove(path);
+  TrialOptions o;
+  o.max_steps = 12;
+  int frames = 0;
+  {
+    TrialVideo video(w, cfg.picture, path);
+    o.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video.AddFrame(v, paths); };
+    const TrialResult r = RunSearchTrial(w, cfg, o, 101);
+    frames = video.frames();
+    EXPECT_EQ(frames, r.steps);
+  }
+  EXPECT_GT(frames, 0);
+  EXPECT_GT(std::filesystem::file_size(path), 1000u);
+  std::filesystem::remove(path);
+}
+
+TEST(TrialVideo, UnknownFormatIsAnErrorNamingTheFile) {
+  const core::World w = SmallLabyrinth(101);
+  try {
+    TrialVideo video(w, {}, "/tmp/trial.gifx");
+    FAIL() << "no error";
+  } catch (const core::DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("/tmp/trial.gifx"), std::string::npos) << e.what();
   }
 }
 
