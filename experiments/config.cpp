@@ -154,6 +154,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     YamlSection r = top.Section("mapping");
     auto& o = c.mapping;
     r.Read("association_gate_chi2", &o.association_gate_chi2, 0.01, 1000.0);
+    r.Read("association_count_bias", &o.association_count_bias, 0.0, 100.0);
     r.Read("false_positive_rate", &o.false_positive_rate, 1e-6, 0.999);
     r.Read("false_negative_rate", &o.false_negative_rate, 1e-6, 0.999);
     r.Read("vertex_log_prior", &o.vertex_log_prior, -100.0, 0.0);

@@ -75,9 +75,15 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     // Frontiers outside the search region (the office park's bounds) do not count.
     planning::PlannerOptions po = o.planner;
     po.clearance = std::min(std::max(po.clearance, config.motion.agent_radius + 0.25), 0.9 * po.inflation_radius);
-    std::vector<planning::FrontierTarget> targets;
+    std::vector<planning::FrontierTarget> targets, original;
     for (const auto& t : planning::FrontierTargets(view, po))
       if ((!open_world || world.bounds.Contains(t.point)) && !given_up.count(t.frontier_id)) targets.push_back(t);
+    original = targets;
+    // A frontier agents have stood next to for a while without it receding (the map does not take in what
+    // lies beyond yet) is pushed through: its target moves into the unknown space behind it, so an agent
+    // walks in and looks from there (the optimistic planner counts unknown space as free).
+    for (auto& t : targets)
+      if (near_steps[t.frontier_id] > o.give_up_steps / 2) t.point = t.point + t.outward * (po.frontier_setback + o.push_distance);
     // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out
     // on the way and the plan is redone every step.
     const planning::VisibilityGraph graph(view, po, false);
@@ -125,10 +131,12 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     }
     // A frontier that agents have stood next to for give_up_steps steps in all (not necessarily in a row)
     // without it going away is given up (counted per frontier, so it holds however the team shuffles).
-    for (const auto& t : targets) {
+    for (size_t i = 0; i < targets.size(); ++i) {
       bool near = false;
-      for (const auto& p : agents) near = near || core::Distance(p, t.point) < o.give_up_distance;
-      if (near && ++near_steps[t.frontier_id] > o.give_up_steps) given_up.insert(t.frontier_id);
+      for (const auto& p : agents)
+        near = near || core::Distance(p, targets[i].point) < o.give_up_distance ||
+               core::Distance(p, original[i].point) < o.give_up_distance;
+      if (near && ++near_steps[targets[i].frontier_id] > o.give_up_steps) given_up.insert(targets[i].frontier_id);
     }
     int stuck = 0;
     for (int a = 0; a < o.num_agents; ++a) {

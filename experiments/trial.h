@@ -22,7 +22,9 @@ struct TrialOptions {
   double switch_ratio = 1.5;    // an agent keeps its frontier unless a new one is cheaper than cost/ratio ...
   double switch_margin = 10.0;  // ... and by more than this
   double give_up_distance = 4.0;  // an agent this close to its frontier target ...
-  int give_up_steps = 10;       // ... for this many steps without the frontier going away gives it up
+  int give_up_steps = 20;       // ... for this many steps without the frontier going away gives it up
+                                // (after half of them its target is pushed push_distance into unknown space)
+  double push_distance = 6.0;
   planning::PlannerOptions planner;
   // Called after every step with the map the planners used and the agents' paths so far (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;

@@ -17,6 +17,7 @@ namespace toponav::mapping {
 
 struct MapperOptions {
   double association_gate_chi2 = 9.21;    // chi-square(2 dof) 99 % gate on the innovation (P + R)
+  double association_count_bias = 1.0;    // gated vertices with fewer detections cost this * ln(ratio) more
   double false_positive_rate = 0.2;       // R_fp of the posterior
   double false_negative_rate = 0.2;       // R_fn of the posterior
   double vertex_log_prior = -3.22;        // per vertex in the map (2 log R_fp, the reference's bias)

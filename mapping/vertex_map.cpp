@@ -59,6 +59,7 @@ void MapperOptions::Validate() const {
   if (min_detections < 1) fail("mapping.min_detections", min_detections, "must be >= 1");
   if (!(wall_threshold > 0 && wall_threshold < 1)) fail("mapping.wall_threshold", wall_threshold, "must be in (0, 1)");
   if (!(wall_skip_damping >= 0 && wall_skip_damping <= 1)) fail("mapping.wall_skip_damping", wall_skip_damping, "must be in [0, 1]");
+  if (!(association_count_bias >= 0)) fail("mapping.association_count_bias", association_count_bias, "must be >= 0");
   if (!(wall_on_segment_tolerance >= 0)) fail("mapping.wall_on_segment_tolerance", wall_on_segment_tolerance, "must be >= 0");
   if (!(edge_log_floor < 0)) fail("mapping.edge_log_floor", edge_log_floor, "must be < 0");
   if (mcmc_samples < 0) fail("mapping.mcmc_samples", mcmc_samples, "must be >= 0");
@@ -79,9 +80,16 @@ struct Mapper::Impl {
     int n = 0;
     bool in_map = true;  // the MCMC state; only counts once n >= min_detections
   };
+  // Evidence for a wall: samples that do not depend on the map ('sum'), and samples with detections lying on
+  // the segment between the two vertices, which damp the sample only while their vertex is in the map.
+  struct CondSample {
+    double value = 0.0;
+    std::vector<int> on_segment;  // vertices of those detections
+  };
   struct WallStats {
     double sum = 0.0;
     int count = 0;
+    std::vector<CondSample> cond;
   };
   struct Obs {
     core::Pose2 pose;
@@ -110,8 +118,7 @@ struct Mapper::Impl {
   MapperOptions o;
   std::vector<Vertex> v;
   std::unordered_map<uint64_t, WallStats> walls;
-  std::vector<char> evidence_mapped;         // the map membership wall evidence was computed with
-  std::vector<std::vector<int>> vertex_obs;  // vertex -> observations that detected it
+  std::vector<std::vector<uint64_t>> spans;  // vertex -> walls whose evidence it can damp (on their segment)
   std::vector<std::vector<int>> neighbours;  // vertex -> vertices it shares wall evidence with
   std::vector<Obs> obs;
   mutable std::vector<PolygonSet> blocks;
@@ -141,39 +148,59 @@ struct Mapper::Impl {
     MapState ms;
     ms.mapped.resize(v.size());
     for (size_t i = 0; i < v.size(); ++i) ms.num_vertices += ms.mapped[i] = Mapped(int(i));
-    ms.walls = MappedWalls();
+    ms.walls = MappedWalls(ms.mapped);
     for (const auto& w : ms.walls) ms.wall_keys.insert(WallKey(w.first, w.second));
     return ms;
   }
 
-  // Walls vertex i brings into (or takes out of) a map where it is present, given the other vertices.
-  std::vector<std::pair<int, int>> IncidentWalls(int i, const MapState& ms) const {
+  // Walls whose existence changes when vertex i flips in 'ms': its own walls to mapped vertices, and walls
+  // between two mapped vertices whose evidence i damps while mapped (it lies on their segment).
+  std::vector<std::pair<int, int>> ChangedWalls(int i, const MapState& ms) const {
     std::vector<std::pair<int, int>> out;
+    const bool on = !ms.mapped[size_t(i)];
     for (int j : neighbours[size_t(i)])
-      if (ms.mapped[size_t(j)] && WallProb(i, j) > o.wall_threshold) out.push_back({std::min(i, j), std::max(i, j)});
+      if (ms.mapped[size_t(j)] && WallProb(i, j, ms.mapped, i, on) > o.wall_threshold)
+        out.push_back({std::min(i, j), std::max(i, j)});
+    if (size_t(i) < spans.size())
+      for (uint64_t key : spans[size_t(i)]) {
+        const int a = int(key >> 32), b = int(key & 0xffffffffu);
+        if (a == i || b == i || !ms.mapped[size_t(a)] || !ms.mapped[size_t(b)]) continue;
+        const bool now = WallProb(a, b, ms.mapped) > o.wall_threshold;
+        const bool then = WallProb(a, b, ms.mapped, i, on) > o.wall_threshold;
+        if (now != then) out.push_back({a, b});
+      }
     return out;
   }
 
   void SetMapped(int i, bool on, MapState* ms) const {
     if (bool(ms->mapped[size_t(i)]) == on) return;
-    const auto inc = IncidentWalls(i, *ms);
+    const auto changed = ChangedWalls(i, *ms);
     ms->mapped[size_t(i)] = on;
     ms->num_vertices += on ? 1 : -1;
-    for (const auto& w : inc) {
-      if (on) {
+    for (const auto& w : changed) {
+      const uint64_t key = WallKey(w.first, w.second);
+      if (!ms->wall_keys.count(key)) {
         ms->walls.insert(std::lower_bound(ms->walls.begin(), ms->walls.end(), w), w);
-        ms->wall_keys.insert(WallKey(w.first, w.second));
+        ms->wall_keys.insert(key);
       } else {
         ms->walls.erase(std::lower_bound(ms->walls.begin(), ms->walls.end(), w));
-        ms->wall_keys.erase(WallKey(w.first, w.second));
+        ms->wall_keys.erase(key);
       }
     }
   }
-  double WallProb(int a, int b) const {
+  // The wall's averaged evidence under the map 'mapped' (with vertex 'flip' set to 'flip_on' if given).
+  double WallProb(int a, int b, const std::vector<char>& mapped, int flip = -1, bool flip_on = false) const {
     auto it = walls.find(WallKey(a, b));
-    return it == walls.end() ? 0.0 : it->second.sum / (it->second.count + 1);  // shrinks one sighting to 1/2
+    if (it == walls.end()) return 0.0;
+    const WallStats& w = it->second;
+    double sum = w.sum;
+    for (const auto& c : w.cond) {
+      int damp = 0;
+      for (int id : c.on_segment) damp += id == flip ? flip_on : (size_t(id) < mapped.size() && mapped[size_t(id)]);
+      sum += c.value * std::pow(o.wall_skip_damping, double(damp));
+    }
+    return sum / (w.count + 1);  // shrinks one sighting to 1/2
   }
-  bool WallMapped(int a, int b) const { return Mapped(a) && Mapped(b) && WallProb(a, b) > o.wall_threshold; }
   Vec2 Pos(int i) const { return ToVec(v[size_t(i)].x); }
 
   // ------------------------------------------------------------ adding observations
@@ -211,8 +238,8 @@ struct Mapper::Impl {
       R[k] = ToEigen(core::DetectionCovariance(z.pose, ob.det[k]));
     }
     // Association: rows = detections, columns = gated candidate vertices + one "new vertex" slot per
-    // detection.  Cost = squared Mahalanobis distance of the innovation (covariance P + R); a new vertex
-    // costs the gate itself.  The assignment is one-to-one: no two detections of one observation share a vertex.
+    // detection.  Cost = squared Mahalanobis distance of the innovation (covariance P + R), plus a bias
+    // towards well-supported vertices; a new vertex costs the gate itself.  The assignment is one-to-one: no two detections of one observation share a vertex.
     std::vector<int> cand;
     std::unordered_map<int, int> col_of;
     std::vector<std::vector<std::pair<int, double>>> gated(n);
@@ -237,7 +264,16 @@ struct Mapper::Impl {
       const double big = 1e9;
       std::vector<std::vector<double>> cost(n, std::vector<double>(cand.size() + n, big));
       for (size_t k = 0; k < n; ++k) {
-        for (const auto& [vi, m2] : gated[k]) cost[k][size_t(col_of[vi])] = m2;
+        // Among the gated vertices, one with fewer detections than the best-supported one pays
+        // association_count_bias * ln(ratio), kept below the gate (joining still beats a new vertex): a
+        // duplicate born beside a vertex (a false detection next to it) starves instead of taking half of
+        // its detections, which would leave both out of the map.
+        int most = 1;
+        for (const auto& g : gated[k]) most = std::max(most, v[size_t(g.first)].n);
+        for (const auto& [vi, m2] : gated[k]) {
+          const double penalty = o.association_count_bias * std::log(double(most) / std::max(1, v[size_t(vi)].n));
+          cost[k][size_t(col_of[vi])] = std::min(m2 + penalty, 0.999 * o.association_gate_chi2);
+        }
         cost[k][cand.size() + k] = o.association_gate_chi2;
       }
       const std::vector<int> col = SolveAssignment(cost);
@@ -264,12 +300,7 @@ struct Mapper::Impl {
         ob.vid[k] = int(v.size()) - 1;
       }
     }
-    evidence_mapped.resize(v.size(), 0);
-    vertex_obs.resize(v.size());
-    for (int id : ob.vid)
-      if (vertex_obs[size_t(id)].empty() || vertex_obs[size_t(id)].back() != int(obs.size()))
-        vertex_obs[size_t(id)].push_back(int(obs.size()));
-    AddWallEvidence(ob, evidence_mapped, 1.0, true);
+    AddWallEvidence(ob);
     obs.push_back(std::move(ob));
     RefreshStar(obs.size() - 1);
     if (blocks.size() * size_t(o.union_block) < obs.size()) {
@@ -281,60 +312,54 @@ struct Mapper::Impl {
   // Wall evidence of one observation: every pair less than pi apart, R = i and L = j counter-clockwise of
   // it; each detection between them scales the evidence by wall_skip_damping (vertexnav.md §2.4) -- except,
   // beyond the reference, a detection lying on the segment between the two (within wall_on_segment_tolerance)
-  // whose vertex is not in the map ('mapped'): a false detection on a wall does not say the wall is missing,
-  // while a mapped vertex on the line (a doorway's jamb) still does.  'sign' -1 takes back what +1 added;
-  // 'count' adds the sighting itself.
-  void AddWallEvidence(const Obs& ob, const std::vector<char>& mapped, double sign, bool count) {
+  // damps it only while its vertex is in the map: a false detection on a wall that the map rejects does not
+  // hide the wall, while a doorway's jamb on the line does once it is mapped (evidence is conditional on
+  // the map, so MCMC weighs the jamb and the wall across the door together).
+  void AddWallEvidence(const Obs& ob) {
     const size_t n = ob.det.size();
     std::vector<Vec2> at(n);
     for (size_t k = 0; k < n; ++k) at[k] = core::DetectionPosition(ob.pose, ob.det[k]);
-    auto ignorable = [&](size_t k, const Vec2& a, const Vec2& b) {
-      const int id = ob.vid[k];
-      if (o.wall_on_segment_tolerance <= 0 || (size_t(id) < mapped.size() && mapped[size_t(id)])) return false;
+    auto on_segment = [&](const Vec2& p, const Vec2& a, const Vec2& b) {
       const Vec2 d = b - a;
       const double len2 = core::Dot(d, d);
-      if (len2 < 1e-12) return false;
-      const double t = core::Dot(at[k] - a, d) / len2;
-      return t > 0 && t < 1 && std::abs(core::Cross(d, at[k] - a)) / std::sqrt(len2) < o.wall_on_segment_tolerance;
+      if (o.wall_on_segment_tolerance <= 0 || len2 < 1e-12) return false;
+      const double t = core::Dot(p - a, d) / len2;
+      return t > 0 && t < 1 && std::abs(core::Cross(d, p - a)) / std::sqrt(len2) < o.wall_on_segment_tolerance;
     };
+    if (spans.size() < v.size()) spans.resize(v.size());
     for (size_t i = 0; i < n; ++i) {
       for (size_t s = 1; s < n; ++s) {
         const size_t j = (i + s) % n;
         if (Wrap2Pi(ob.det[j].bearing - ob.det[i].bearing) >= core::kPi) break;
         const int a = ob.vid[i], b = ob.vid[j];
         if (a == b) continue;
-        int between = 0;
-        for (size_t t = 1; t < s; ++t) between += !ignorable((i + t) % n, at[i], at[j]);
-        const double q = 1.0 - 0.5 * (core::NoWallCcw(ob.det[i].labels) + core::NoWallCw(ob.det[j].labels));
-        WallStats& w = walls[WallKey(a, b)];
-        if (w.count == 0 && count) {
+        int fixed = 0;
+        CondSample c;
+        for (size_t t = 1; t < s; ++t) {
+          const size_t k = (i + t) % n;
+          if (ob.vid[k] != a && ob.vid[k] != b && on_segment(at[k], at[i], at[j])) c.on_segment.push_back(ob.vid[k]);
+          else ++fixed;
+        }
+        const uint64_t key = WallKey(a, b);
+        WallStats& w = walls[key];
+        if (w.count == 0) {
           neighbours[size_t(a)].push_back(b);
           neighbours[size_t(b)].push_back(a);
         }
-        w.sum += sign * std::pow(o.wall_skip_damping, double(between)) * q;
-        if (count) w.count += 1;
+        w.count += 1;
+        c.value = std::pow(o.wall_skip_damping, double(fixed)) *
+                  (1.0 - 0.5 * (core::NoWallCcw(ob.det[i].labels) + core::NoWallCw(ob.det[j].labels)));
+        if (c.on_segment.empty() || c.value < 1e-9) {
+          w.sum += c.value;
+          continue;
+        }
+        for (int id : c.on_segment) {
+          auto& sp = spans[size_t(id)];
+          if (std::find(sp.begin(), sp.end(), key) == sp.end()) sp.push_back(key);
+        }
+        w.cond.push_back(std::move(c));
       }
     }
-  }
-
-  // Brings wall evidence up to date with the map's vertices (only observations that saw a vertex that
-  // entered or left the map since the last sync are redone).
-  void SyncWallEvidence() {
-    if (o.wall_on_segment_tolerance <= 0) return;
-    std::vector<char> now(v.size());
-    for (size_t i = 0; i < v.size(); ++i) now[i] = Mapped(int(i));
-    evidence_mapped.resize(v.size(), 0);
-    vertex_obs.resize(v.size());
-    std::vector<int> redo;
-    for (size_t i = 0; i < v.size(); ++i)
-      if (now[i] != evidence_mapped[i]) redo.insert(redo.end(), vertex_obs[i].begin(), vertex_obs[i].end());
-    std::sort(redo.begin(), redo.end());
-    redo.erase(std::unique(redo.begin(), redo.end()), redo.end());
-    for (int k : redo) {
-      AddWallEvidence(obs[size_t(k)], evidence_mapped, -1.0, false);
-      AddWallEvidence(obs[size_t(k)], now, 1.0, false);
-    }
-    evidence_mapped = std::move(now);
   }
 
   // ------------------------------------------------------------ stars, hypothetical observations, posterior
@@ -462,11 +487,11 @@ struct Mapper::Impl {
     }
   }
 
-  std::vector<std::pair<int, int>> MappedWalls() const {
+  std::vector<std::pair<int, int>> MappedWalls(const std::vector<char>& mapped) const {
     std::vector<std::pair<int, int>> out;
     for (const auto& [key, w] : walls) {
       const int a = int(key >> 32), b = int(key & 0xffffffffu);
-      if (WallMapped(a, b)) out.push_back({a, b});
+      if (mapped[size_t(a)] && mapped[size_t(b)] && WallProb(a, b, mapped) > o.wall_threshold) out.push_back({a, b});
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -571,11 +596,11 @@ struct Mapper::Impl {
   }
 
   // Observations whose likelihood can change when vertex i flips: their star polygon meets the vertex or a
-  // wall it would carry (sight lines and hypothetical vertices all lie inside the star polygon).
+  // wall that comes or goes with it (sight lines and hypothetical vertices all lie inside the star polygon).
   std::vector<int> Affected(int i, const MapState& ms) const {
     std::vector<int> out;
     const Vec2 x = Pos(i);
-    std::vector<std::pair<int, int>> walls = IncidentWalls(i, ms);
+    std::vector<std::pair<int, int>> walls = ChangedWalls(i, ms);
     for (size_t k = 0; k < obs.size(); ++k) {
       const Obs& ob = obs[k];
       bool hit = std::find(ob.vid.begin(), ob.vid.end(), i) != ob.vid.end() || StarMeets(ob, x, x);
@@ -587,7 +612,6 @@ struct Mapper::Impl {
 
   double Sample(core::Rng& rng) {
     RefreshStars();
-    SyncWallEvidence();
     // Candidates: vertices with enough detections seen in the recent window of observations.
     std::vector<int> cand;
     {
@@ -646,7 +670,6 @@ struct Mapper::Impl {
       }
     }
     for (size_t k = 0; k < v.size(); ++k) v[k].in_map = best_state[k];
-    SyncWallEvidence();
     FreezeViewMap();
     return LogPosterior();
   }
@@ -871,7 +894,7 @@ MapView Mapper::View() const {
     const MapVertex mv{int(i), ToVec(m.v[i].x), FromEigen(m.v[i].P), m.v[i].n};
     (ms.mapped[i] ? view.vertices : view.rejected).push_back(mv);
   }
-  for (const auto& [a, b] : ms.walls) view.walls.push_back({a, b, m.Pos(a), m.Pos(b), m.WallProb(a, b)});
+  for (const auto& [a, b] : ms.walls) view.walls.push_back({a, b, m.Pos(a), m.Pos(b), m.WallProb(a, b, ms.mapped)});
   view.known_space = m.total.Polygons();
   view.known_set = std::make_shared<const PolygonSet>(m.total);
   view.frontiers = m.Frontiers(view.known_space);

@@ -218,15 +218,16 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
       }
     }
     // Where known space is thinner than the setback (a sliver), use the midpoint itself.
-    Vec2 target = f.midpoint;
+    Vec2 target = f.midpoint, outward{-dir.y, dir.x};
     for (const double side : {1.0, -1.0}) {
       const Vec2 p = f.midpoint + Vec2{-dir.y, dir.x} * (side * options.frontier_setback);
       if (InKnown(view, p)) {
         target = p;
+        outward = Vec2{-dir.y, dir.x} * -side;
         break;
       }
     }
-    out.push_back({f.id, target, f.length});
+    out.push_back({f.id, target, f.length, outward});
   }
   return out;
 }

@@ -63,6 +63,7 @@ struct FrontierTarget {
   int frontier_id = 0;
   core::Vec2 point;
   double length = 0.0;
+  core::Vec2 outward{1, 0};  // unit normal of the frontier at its midpoint, pointing into unknown space
 };
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options);
 

@@ -130,6 +130,53 @@ TEST(Mapper, CountingEveryDetectionBetweenCornersLosesTheWall) {
   EXPECT_EQ(view.walls.size(), 3u);
 }
 
+TEST(Mapper, MappedDoorwayJambsOnTheWallLineKeepTheDoorwayOpen) {
+  // The square room with a doorway from (4,0) to (6,0): the jambs lie on the line between the corners
+  // (0,0) and (10,0), whose labels say a wall runs on; once the jambs are mapped they still damp that
+  // pair's evidence, so no wall closes the doorway.
+  Mapper m(SquareOptions());
+  core::Rng rng(6);
+  for (int i = 0; i < 30; ++i) {
+    const core::Pose2 pose{5 + 0.03 * i, 5, 0.05 * i};
+    std::vector<Detection> d;
+    for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) d.push_back(Det(pose, c, core::VertexLabel::kCorner));
+    d.push_back(Det(pose, {4, 0}, core::VertexLabel::kLeftGap));   // no wall counter-clockwise (the doorway)
+    d.push_back(Det(pose, {6, 0}, core::VertexLabel::kRightGap));  // no wall clockwise
+    m.AddObservation(Obs(pose, d));
+    if (i % 5 == 4) m.SampleMostLikelyMap(rng);
+  }
+  const MapView view = m.View();
+  EXPECT_EQ(view.vertices.size(), 6u);
+  EXPECT_TRUE(HasWall(view, {0, 0}, {4, 0}));
+  EXPECT_TRUE(HasWall(view, {6, 0}, {10, 0}));
+  EXPECT_FALSE(HasWall(view, {0, 0}, {10, 0})) << "a wall across the doorway";
+  EXPECT_FALSE(HasWall(view, {4, 0}, {6, 0}));
+  EXPECT_EQ(view.frontiers.size(), 1u) << "the doorway";
+}
+
+// Detections of the corner (10,10) scattered around it, the first observation with a second (false) one
+// 1.2 units away: how many detections the vertex born from the false one collects.
+int DuplicateDetections(double count_bias) {
+  MapperOptions o = SquareOptions();
+  o.association_count_bias = count_bias;
+  Mapper m(o);
+  core::Rng rng(8);
+  for (int i = 0; i < 40; ++i) {
+    const core::Pose2 pose{5, 5, 0.0};
+    std::vector<Detection> d{Det(pose, {10 + rng.Normal(0, 0.6), 10 + rng.Normal(0, 0.6)}, core::VertexLabel::kCorner, 1.0, 0.1)};
+    if (i == 0) d.push_back(Det(pose, {10.0, 8.8}, core::VertexLabel::kPoint, 1.0, 0.1));
+    m.AddObservation(Obs(pose, d));
+  }
+  const auto vs = m.PotentialVertices();
+  EXPECT_EQ(vs.size(), 2u);
+  return vs.size() == 2 ? std::min(vs[0].num_detections, vs[1].num_detections) : -1;
+}
+
+TEST(Mapper, DuplicateBornBesideAVertexStarves) {
+  EXPECT_LE(DuplicateDetections(1.0), 3);
+  EXPECT_GT(DuplicateDetections(0.0), 5) << "without the bias the duplicate takes a share (the failure it fixes)";
+}
+
 TEST(Mapper, TwoDetectionsOfOneObservationNeverJoinOneVertex) {
   Mapper m(SquareOptions());
   const core::Pose2 pose{0, 0, 0};
