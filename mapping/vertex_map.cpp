@@ -122,6 +122,8 @@ struct Mapper::Impl {
   std::vector<std::vector<int>> neighbours;  // vertex -> vertices it shares wall evidence with
   std::vector<Obs> obs;
   mutable std::vector<PolygonSet> blocks;
+  mutable std::vector<PolygonSet> union_tree;  // binary tree over the blocks: node k = union of 2k and 2k+1
+  mutable std::vector<char> tree_dirty;
   mutable std::vector<char> block_dirty;
   mutable PolygonSet total;
   mutable bool total_valid = false;           // false: rebuild from the blocks on the next update
@@ -749,24 +751,35 @@ struct Mapper::Impl {
       block_dirty[i / size_t(o.union_block)] = 1;
     }
     if (!rebuild && total_valid) {
-      if (!grown.empty()) {  // one sweep joins them all
-        grown.push_back(std::move(total));
-        total = PolygonSet::JoinAll(grown);
-      }
+      if (!grown.empty()) total.Join(PolygonSet::JoinAll(grown));  // the small pieces first, then one join with the big union
       return;
     }
-    std::vector<PolygonSet> parts;
-    for (size_t b = 0; b < blocks.size(); ++b) {
-      if (block_dirty[b]) {
-        std::vector<PolygonSet> members;
-        for (size_t i = b * size_t(o.union_block); i < std::min(obs.size(), (b + 1) * size_t(o.union_block)); ++i)
-          if (!obs[i].sc.empty()) members.push_back(obs[i].sc);
-        blocks[b] = PolygonSet::JoinAll(members);
-        block_dirty[b] = 0;
-      }
-      parts.push_back(blocks[b]);
+    // Blocks are the leaves of a binary tree whose inner nodes cache the union of their subtree: a rebuild
+    // redoes the dirty blocks and the nodes above them only.
+    size_t leaves = 1;
+    while (leaves < blocks.size()) leaves *= 2;
+    if (union_tree.size() != 2 * leaves) {  // more blocks than leaves: a bigger tree, every node redone
+      union_tree.assign(2 * leaves, PolygonSet());
+      tree_dirty.assign(2 * leaves, 1);
+      for (size_t b = 0; b < blocks.size(); ++b) union_tree[leaves + b] = blocks[b];
     }
-    total = PolygonSet::JoinAll(parts);
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      if (!block_dirty[b]) continue;
+      std::vector<PolygonSet> members;
+      for (size_t i = b * size_t(o.union_block); i < std::min(obs.size(), (b + 1) * size_t(o.union_block)); ++i)
+        if (!obs[i].sc.empty()) members.push_back(obs[i].sc);
+      blocks[b] = PolygonSet::JoinAll(members);
+      block_dirty[b] = 0;
+      union_tree[leaves + b] = blocks[b];
+      for (size_t node = (leaves + b) / 2; node >= 1; node /= 2) tree_dirty[node] = 1;
+    }
+    for (size_t node = leaves - 1; node >= 1; --node) {
+      if (!tree_dirty[node]) continue;
+      union_tree[node] = union_tree[2 * node];
+      if (!union_tree[2 * node + 1].empty()) union_tree[node].Join(union_tree[2 * node + 1]);
+      tree_dirty[node] = 0;
+    }
+    total = union_tree[1];
     total_valid = true;
   }
 
