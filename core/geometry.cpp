@@ -73,6 +73,19 @@ double DistanceToRing(const Vec2& p, const Ring& ring) {
   return best;
 }
 
+bool NearRing(const Vec2& p, const Ring& ring, double tol) {
+  for (size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % n];
+    // Cheap box rejection before the distance.
+    if (p.x < std::min(a.x, b.x) - tol || p.x > std::max(a.x, b.x) + tol || p.y < std::min(a.y, b.y) - tol ||
+        p.y > std::max(a.y, b.y) + tol)
+      continue;
+    if (DistanceToSegment(p, {a, b}) < tol) return true;
+  }
+  return false;
+}
+
 namespace {
 int Orient(const Vec2& a, const Vec2& b, const Vec2& c) {
   const double v = Cross(b - a, c - a);

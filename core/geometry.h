@@ -69,6 +69,7 @@ Aabb2 Bounds(const std::vector<Vec2>& points, const Aabb2& start);
 
 double DistanceToSegment(const Vec2& p, const Segment2& s);
 double DistanceToRing(const Vec2& p, const Ring& ring);  // to the boundary
+bool NearRing(const Vec2& p, const Ring& ring, double tol);  // DistanceToRing(p, ring) < tol, faster
 double SegmentDistance(const Segment2& s, const Segment2& t);
 // Distance between two ring-bounded regions: 0 if they overlap or one contains the other.
 double RingDistance(const Ring& a, const Ring& b);

@@ -512,7 +512,7 @@ struct Mapper::Impl {
     auto consider = [&](int id, bool on_star) {
       const Vec2 x = Pos(id);
       if (core::Distance(x, p) >= o.max_range) return;
-      if (!on_star && !(BoxHits(ob.box, x, 1e-6) && (core::Contains(ob.star, x) || core::DistanceToRing(x, ob.star) < 1e-6)))
+      if (!on_star && !(BoxHits(ob.box, x, 1e-6) && (core::Contains(ob.star, x) || core::NearRing(x, ob.star, 1e-6))))
         return;
       for (const auto& w : near_walls) {
         if (w.first == id || w.second == id) continue;
@@ -591,7 +591,7 @@ struct Mapper::Impl {
     if (ob.star.empty() || !BoxHitsSegment(ob.box, a, b, 1e-6)) return false;
     if (core::Contains(ob.star, a) || core::Contains(ob.star, b)) return true;
     // The same boundary tolerance as Hypothetical(): a vertex on the polygon counts as inside.
-    if (core::DistanceToRing(a, ob.star) < 1e-6 || core::DistanceToRing(b, ob.star) < 1e-6) return true;
+    if (core::NearRing(a, ob.star, 1e-6) || core::NearRing(b, ob.star, 1e-6)) return true;
     for (size_t i = 0; i < ob.star.size(); ++i)
       if (core::SegmentsIntersect({a, b}, {ob.star[i], ob.star[(i + 1) % ob.star.size()]})) return true;
     return false;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/rng.h"
 #include "tests/testing/worlds.h"
 
 namespace toponav::core {
@@ -45,6 +46,24 @@ TEST(Geometry, RingDistanceIsZeroForOverlapAndContainment) {
   EXPECT_DOUBLE_EQ(RingDistance(testing::Rect(0, 0, 1, 1), testing::Rect(3, 0, 4, 1)), 2.0);
   EXPECT_DOUBLE_EQ(RingDistance(testing::Rect(0, 0, 2, 2), testing::Rect(1, 1, 3, 3)), 0.0);
   EXPECT_DOUBLE_EQ(RingDistance(testing::Rect(0, 0, 10, 10), testing::Rect(4, 4, 5, 5)), 0.0);
+}
+
+TEST(Geometry, NearRingAgreesWithDistanceToRing) {
+  const Ring ring{{0, 0}, {10, 0}, {10, 4}, {3, 7}, {0, 4}};
+  Rng rng(3);
+  int near = 0;
+  for (int i = 0; i < 2000; ++i) {
+    // Points on, near and away from the boundary.
+    const Vec2 p = i % 2 ? Vec2{rng.Uniform(-2, 12), rng.Uniform(-2, 9)}
+                         : ring[size_t(i / 2) % ring.size()] + Vec2{rng.Uniform(-0.5, 0.5), rng.Uniform(-0.5, 0.5)};
+    for (double tol : {1e-6, 0.1, 0.5}) {
+      const bool expect = DistanceToRing(p, ring) < tol;
+      EXPECT_EQ(NearRing(p, ring, tol), expect) << p.x << "," << p.y << " tol " << tol;
+      near += expect;
+    }
+  }
+  EXPECT_TRUE(NearRing({5, 0}, ring, 1e-6)) << "a point on an edge";
+  EXPECT_GT(near, 100);
 }
 
 TEST(Geometry, WrapAngleMapsIntoHalfOpenRange) {
