@@ -99,7 +99,7 @@ class Mapper {
 
   // MCMC over vertex inclusion: options.mcmc_samples single-vertex flips of the recently seen candidates
   // (random-order systematic scan), Metropolis acceptance; leaves the map at the most likely state seen and
-  // returns its log posterior.
+  // returns how much that raised the log posterior (>= 0).
   double SampleMostLikelyMap(core::Rng& rng);
 
   // The log posterior of the current map (all observations).

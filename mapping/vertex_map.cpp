@@ -122,6 +122,9 @@ struct Mapper::Impl {
   std::vector<std::vector<int>> neighbours;  // vertex -> vertices it shares wall evidence with
   std::vector<Obs> obs;
   mutable std::vector<PolygonSet> blocks;
+  bool star_cache = false;                            // set during Sample: star_members is valid
+  mutable std::vector<std::vector<int>> star_members;  // observation -> potential vertices inside its star
+  mutable std::vector<char> star_members_ok;
   mutable std::vector<PolygonSet> union_tree;  // binary tree over the blocks: node k = union of 2k and 2k+1
   mutable std::vector<char> tree_dirty;
   mutable std::vector<char> block_dirty;
@@ -525,9 +528,24 @@ struct Mapper::Impl {
       if (ms.mapped[size_t(id)] && std::find(ob.vid.begin(), ob.vid.begin() + long(k), id) == ob.vid.begin() + long(k))
         consider(id, true);
     }
-    if (!ob.star.empty())
+    if (!ob.star.empty() && star_cache) {
+      // Within a Sample call: the potential map vertices this star polygon holds, found once.
+      const size_t k = size_t(&ob - obs.data());
+      if (!star_members_ok[k]) {
+        for (size_t id = 0; id < v.size(); ++id) {
+          const Vec2 x = Pos(int(id));
+          if (v[id].n >= o.min_detections && std::find(ob.vid.begin(), ob.vid.end(), int(id)) == ob.vid.end() &&
+              BoxHits(ob.box, x, 1e-6) && (core::Contains(ob.star, x) || core::NearRing(x, ob.star, 1e-6)))
+            star_members[k].push_back(int(id));
+        }
+        star_members_ok[k] = 1;
+      }
+      for (int id : star_members[k])
+        if (ms.mapped[size_t(id)]) consider(id, true);
+    } else if (!ob.star.empty()) {
       for (size_t id = 0; id < v.size(); ++id)
         if (ms.mapped[id] && std::find(ob.vid.begin(), ob.vid.end(), int(id)) == ob.vid.end()) consider(int(id), false);
+    }
     std::sort(h.begin(), h.end());
     std::vector<int> out;
     for (const auto& e : h) out.push_back(e.second);
@@ -614,6 +632,10 @@ struct Mapper::Impl {
 
   double Sample(core::Rng& rng) {
     RefreshStars();
+    // Positions and star polygons stay put until the call returns: cache which vertices each star holds.
+    star_cache = true;
+    star_members.assign(obs.size(), {});
+    star_members_ok.assign(obs.size(), 0);
     // Candidates: vertices with enough detections seen in the recent window of observations.
     std::vector<int> cand;
     {
@@ -672,8 +694,9 @@ struct Mapper::Impl {
       }
     }
     for (size_t k = 0; k < v.size(); ++k) v[k].in_map = best_state[k];
+    star_cache = false;
     FreezeViewMap();
-    return LogPosterior();
+    return best_delta;  // (the full posterior would cost a hypothetical observation per past observation)
   }
 
   // ------------------------------------------------------------ known space and frontiers

@@ -121,8 +121,16 @@ bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b, bool relax_a, bool rel
     const double cb = relax_b ? std::min(options_.clearance, len / 2) : 0.0;
     inner = {a + d * ca, b - d * cb};
   }
+  // Walls whose boxes stay clear of the inner segment's box grown by the clearance can neither come too close
+  // nor cross the whole segment (it reaches at most 'clearance' beyond the inner one).
+  const double c = options_.clearance;
+  const double minx = std::min(inner.a.x, inner.b.x) - c, maxx = std::max(inner.a.x, inner.b.x) + c;
+  const double miny = std::min(inner.a.y, inner.b.y) - c, maxy = std::max(inner.a.y, inner.b.y) + c;
   for (const auto& w : walls_) {
-    if (core::SegmentDistance(inner, w) < options_.clearance) return false;
+    if (std::max(w.a.x, w.b.x) < minx || std::min(w.a.x, w.b.x) > maxx || std::max(w.a.y, w.b.y) < miny ||
+        std::min(w.a.y, w.b.y) > maxy)
+      continue;
+    if (core::SegmentDistance(inner, w) < c) return false;
     if ((relax_a || relax_b) && core::SegmentsIntersect(s, w)) return false;
   }
   return StaysKnown(a, b);
