@@ -517,9 +517,13 @@ struct Mapper::Impl {
       if (core::Distance(x, p) >= o.max_range) return;
       if (!on_star && !(BoxHits(ob.box, x, 1e-6) && (core::Contains(ob.star, x) || core::NearRing(x, ob.star, 1e-6))))
         return;
+      const double minx = std::min(p.x, x.x), maxx = std::max(p.x, x.x), miny = std::min(p.y, x.y), maxy = std::max(p.y, x.y);
       for (const auto& w : near_walls) {
         if (w.first == id || w.second == id) continue;
-        if (core::SegmentsIntersect({p, x}, {Pos(w.first), Pos(w.second)})) return;
+        const Vec2 a = Pos(w.first), b = Pos(w.second);
+        if (std::max(a.x, b.x) < minx || std::min(a.x, b.x) > maxx || std::max(a.y, b.y) < miny || std::min(a.y, b.y) > maxy)
+          continue;  // boxes apart: no crossing
+        if (core::SegmentsIntersect({p, x}, {a, b})) return;
       }
       h.push_back({std::atan2(x.y - p.y, x.x - p.x), id});
     };
