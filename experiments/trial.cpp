@@ -31,6 +31,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
                            mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();
   TOPONAV_CHECK(o.num_agents >= 1, "num_agents " << o.num_agents);
+  TOPONAV_CHECK(o.stuck_steps >= 1, "stuck_steps " << o.stuck_steps);
   mapping::MapperOptions mo = config.mapping;
   mo.world_bounds = world.bounds;
   if (!world.has_boundary()) mo.open_region = world.bounds;  // open world: its bounds are the search region
@@ -82,8 +83,11 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     // A frontier agents have stood next to for a while without it receding (the map does not take in what
     // lies beyond yet) is pushed through: its target moves into the unknown space behind it, so an agent
     // walks in and looks from there (the optimistic planner counts unknown space as free).
-    for (auto& t : targets)
-      if (near_steps[t.frontier_id] > o.give_up_steps / 2) t.point = t.point + t.outward * (po.frontier_setback + o.push_distance);
+    for (auto& t : targets) {
+      if (near_steps[t.frontier_id] <= o.give_up_steps / 2) continue;
+      const Vec2 pushed = t.point + t.outward * (po.frontier_setback + o.push_distance);
+      if (!open_world || world.bounds.Contains(pushed)) t.point = pushed;  // never out of the search region
+    }
     // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out
     // on the way and the plan is redone every step.
     const planning::VisibilityGraph graph(view, po, false);
@@ -174,6 +178,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     mapper.SampleMostLikelyMap(rng);
     view = mapper.View();
   }
+  if (o.on_step) o.on_step(view, r.paths);  // the final map, the one the metrics score
   r.iou = open_world ? BuildingPlacementIoU(world, view) : KnownSpaceIoU(world, view);
   r.success = r.explored && r.iou > o.success_iou;
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

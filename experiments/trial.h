@@ -26,7 +26,8 @@ struct TrialOptions {
                                 // (after half of them its target is pushed push_distance into unknown space)
   double push_distance = 6.0;
   planning::PlannerOptions planner;
-  // Called after every step with the map the planners used and the agents' paths so far (videos).
+  // Called after every step with the map the planners used and the agents' paths so far, and once more
+  // with the final map the metrics score (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
 };
 

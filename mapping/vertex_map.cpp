@@ -535,6 +535,7 @@ struct Mapper::Impl {
     if (!ob.star.empty() && star_cache) {
       // Within a Sample call: the potential map vertices this star polygon holds, found once.
       const size_t k = size_t(&ob - obs.data());
+      TOPONAV_CHECK(k < star_members_ok.size(), "observation outside the star-membership cache");
       if (!star_members_ok[k]) {
         for (size_t id = 0; id < v.size(); ++id) {
           const Vec2 x = Pos(int(id));
@@ -637,6 +638,10 @@ struct Mapper::Impl {
   double Sample(core::Rng& rng) {
     RefreshStars();
     // Positions and star polygons stay put until the call returns: cache which vertices each star holds.
+    struct CacheOff {
+      bool& on;
+      ~CacheOff() { on = false; }
+    } cache_off{star_cache};
     star_cache = true;
     star_members.assign(obs.size(), {});
     star_members_ok.assign(obs.size(), 0);
@@ -698,7 +703,6 @@ struct Mapper::Impl {
       }
     }
     for (size_t k = 0; k < v.size(); ++k) v[k].in_map = best_state[k];
-    star_cache = false;
     FreezeViewMap();
     return best_delta;  // (the full posterior would cost a hypothetical observation per past observation)
   }

@@ -114,7 +114,15 @@ struct MotionSim::Impl {
     std::vector<signed char> free(size_t(n) * n, -1);  // -1 not yet tested
     auto is_free = [&](int i, int j) {
       signed char& f = free[size_t(j) * n + i];
-      if (f < 0) f = core::SignedDistance(world, centre(i, j)) >= need ? 1 : 0;
+      if (f < 0) {
+        const Vec2 c = centre(i, j);
+        // Open worlds: the region's edge is a wall for motion too (SignedDistance does not know it).
+        const bool inside = world.has_boundary() || (c.x > world.bounds.min.x + options.agent_radius &&
+                                                     c.x < world.bounds.max.x - options.agent_radius &&
+                                                     c.y > world.bounds.min.y + options.agent_radius &&
+                                                     c.y < world.bounds.max.y - options.agent_radius);
+        f = inside && core::SignedDistance(world, c) >= need ? 1 : 0;
+      }
       return f == 1;
     };
     std::vector<double> dist(size_t(n) * n, std::numeric_limits<double>::infinity());
@@ -174,6 +182,9 @@ struct MotionSim::Impl {
       if (dist[size_t(route[k])] > step + 1e-9 || Clearance(pos, p) < need) break;
       aim = p;
     }
+    // A coarse grid (avoid_cell near the step length) must not make a step longer than asked.
+    const double reach = core::Distance(pos, aim);
+    if (reach > step) aim = pos + (aim - pos) * (step / reach);
     *turned = true;
     return aim;
   }

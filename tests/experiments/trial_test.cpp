@@ -35,7 +35,7 @@ TEST(SearchTrial, SmallWorldIsFullyExploredByOneAndByThreeAgents) {
   }
 }
 
-TEST(TrialVideo, HasOneFramePerStepOfTheTrial) {
+TEST(TrialVideo, HasOneFramePerStepAndTheFinalMap) {
   const Config cfg;
   const core::World w = SmallLabyrinth(101);
   const std::string path = (std::filesystem::temp_directory_path() / "toponav_trial_video_test.mp4").string();
@@ -48,7 +48,7 @@ TEST(TrialVideo, HasOneFramePerStepOfTheTrial) {
     o.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video.AddFrame(v, paths); };
     const TrialResult r = RunSearchTrial(w, cfg, o, 101);
     frames = video.frames();
-    EXPECT_EQ(frames, r.steps);
+    EXPECT_EQ(frames, r.steps + 1) << "one frame a step and the final map";
   }
   EXPECT_GT(frames, 0);
   EXPECT_GT(std::filesystem::file_size(path), 1000u);
