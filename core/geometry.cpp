@@ -77,11 +77,7 @@ bool NearRing(const Vec2& p, const Ring& ring, double tol) {
   for (size_t i = 0, n = ring.size(); i < n; ++i) {
     const Vec2& a = ring[i];
     const Vec2& b = ring[(i + 1) % n];
-    // Cheap box rejection before the distance.
-    if (p.x < std::min(a.x, b.x) - tol || p.x > std::max(a.x, b.x) + tol || p.y < std::min(a.y, b.y) - tol ||
-        p.y > std::max(a.y, b.y) + tol)
-      continue;
-    if (DistanceToSegment(p, {a, b}) < tol) return true;
+    if (BoxHits(SegmentBox(a, b), p, tol) && DistanceToSegment(p, {a, b}) < tol) return true;
   }
   return false;
 }

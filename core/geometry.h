@@ -2,6 +2,7 @@
 // Plain 2D value types shared by every layer, and free functions on them.
 // Conventions: angles in radians, counter-clockwise positive, atan2 convention; a Ring is a closed polygon
 // boundary stored without repeating its first point; polygon outer rings are counter-clockwise, holes clockwise.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -45,6 +46,19 @@ struct Aabb2 {
   double height() const { return max.y - min.y; }
   bool Contains(const Vec2& p) const { return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y; }
 };
+
+// Cheap box tests (exact comparisons, so disjoint boxes prove there is no contact): 'p' in 'box' grown by
+// 'grow' on every side (a negative grow shrinks it); the box of segment p-q meets 'box' grown by 'grow'.
+inline Aabb2 SegmentBox(const Vec2& p, const Vec2& q) {
+  return {{std::min(p.x, q.x), std::min(p.y, q.y)}, {std::max(p.x, q.x), std::max(p.y, q.y)}};
+}
+inline bool BoxHits(const Aabb2& box, const Vec2& p, double grow = 0.0) {
+  return p.x >= box.min.x - grow && p.x <= box.max.x + grow && p.y >= box.min.y - grow && p.y <= box.max.y + grow;
+}
+inline bool BoxHitsSegment(const Aabb2& box, const Vec2& p, const Vec2& q, double grow = 0.0) {
+  return std::max(p.x, q.x) >= box.min.x - grow && std::min(p.x, q.x) <= box.max.x + grow &&
+         std::max(p.y, q.y) >= box.min.y - grow && std::min(p.y, q.y) <= box.max.y + grow;
+}
 
 struct Circle {
   Vec2 center;

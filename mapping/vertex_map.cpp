@@ -31,13 +31,8 @@ double Wrap2Pi(double a) {
   a = std::fmod(a, 2 * core::kPi);
   return a < 0 ? a + 2 * core::kPi : a;
 }
-bool BoxHits(const core::Aabb2& b, const Vec2& p, double grow) {
-  return p.x >= b.min.x - grow && p.x <= b.max.x + grow && p.y >= b.min.y - grow && p.y <= b.max.y + grow;
-}
-bool BoxHitsSegment(const core::Aabb2& b, const Vec2& p, const Vec2& q, double grow) {
-  return std::max(p.x, q.x) >= b.min.x - grow && std::min(p.x, q.x) <= b.max.x + grow &&
-         std::max(p.y, q.y) >= b.min.y - grow && std::min(p.y, q.y) <= b.max.y + grow;
-}
+using core::BoxHits;
+using core::BoxHitsSegment;
 
 }  // namespace
 
@@ -517,13 +512,11 @@ struct Mapper::Impl {
       if (core::Distance(x, p) >= o.max_range) return;
       if (!on_star && !(BoxHits(ob.box, x, 1e-6) && (core::Contains(ob.star, x) || core::NearRing(x, ob.star, 1e-6))))
         return;
-      const double minx = std::min(p.x, x.x), maxx = std::max(p.x, x.x), miny = std::min(p.y, x.y), maxy = std::max(p.y, x.y);
+      const core::Aabb2 sight = core::SegmentBox(p, x);
       for (const auto& w : near_walls) {
         if (w.first == id || w.second == id) continue;
         const Vec2 a = Pos(w.first), b = Pos(w.second);
-        if (std::max(a.x, b.x) < minx || std::min(a.x, b.x) > maxx || std::max(a.y, b.y) < miny || std::min(a.y, b.y) > maxy)
-          continue;  // boxes apart: no crossing
-        if (core::SegmentsIntersect({p, x}, {a, b})) return;
+        if (BoxHitsSegment(sight, a, b) && core::SegmentsIntersect({p, x}, {a, b})) return;
       }
       h.push_back({std::atan2(x.y - p.y, x.x - p.x), id});
     };

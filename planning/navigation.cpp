@@ -124,12 +124,9 @@ bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b, bool relax_a, bool rel
   // Walls whose boxes stay clear of the inner segment's box grown by the clearance can neither come too close
   // nor cross the whole segment (it reaches at most 'clearance' beyond the inner one).
   const double c = options_.clearance;
-  const double minx = std::min(inner.a.x, inner.b.x) - c, maxx = std::max(inner.a.x, inner.b.x) + c;
-  const double miny = std::min(inner.a.y, inner.b.y) - c, maxy = std::max(inner.a.y, inner.b.y) + c;
+  const core::Aabb2 box = core::SegmentBox(inner.a, inner.b);
   for (const auto& w : walls_) {
-    if (std::max(w.a.x, w.b.x) < minx || std::min(w.a.x, w.b.x) > maxx || std::max(w.a.y, w.b.y) < miny ||
-        std::min(w.a.y, w.b.y) > maxy)
-      continue;
+    if (!core::BoxHitsSegment(box, w.a, w.b, c)) continue;
     if (core::SegmentDistance(inner, w) < c) return false;
     if ((relax_a || relax_b) && core::SegmentsIntersect(s, w)) return false;
   }

@@ -117,10 +117,7 @@ struct MotionSim::Impl {
       if (f < 0) {
         const Vec2 c = centre(i, j);
         // Open worlds: the region's edge is a wall for motion too (SignedDistance does not know it).
-        const bool inside = world.has_boundary() || (c.x > world.bounds.min.x + options.agent_radius &&
-                                                     c.x < world.bounds.max.x - options.agent_radius &&
-                                                     c.y > world.bounds.min.y + options.agent_radius &&
-                                                     c.y < world.bounds.max.y - options.agent_radius);
+        const bool inside = world.has_boundary() || core::BoxHits(world.bounds, c, -options.agent_radius);
         f = inside && core::SignedDistance(world, c) >= need ? 1 : 0;
       }
       return f == 1;

@@ -26,6 +26,14 @@ std::string FreshDir(const std::string& name) {
   return d.string();
 }
 
+// A quiet batch writing to a fresh directory.
+BatchOptions QuietBatch(const std::string& name) {
+  BatchOptions o;
+  o.out_dir = FreshDir(name);
+  o.progress = false;
+  return o;
+}
+
 int CountLines(const std::string& dir) {
   int n = 0;
   for (const auto& e : fs::directory_iterator(dir))
@@ -41,10 +49,8 @@ TEST(Batch, ResumesWithoutRedoingOrLosingTrials) {
   const Config cfg = TinyBench();
   const auto trials = ListTrials(cfg.bench);
   ASSERT_EQ(trials.size(), 6u);
-  BatchOptions o;
-  o.out_dir = FreshDir("resume");
+  BatchOptions o = QuietBatch("resume");
   o.workers = 2;
-  o.progress = false;
   o.max_new_trials = 2;  // "killed" after two trials
   EXPECT_EQ(RunBatch(cfg, o, trials).ran, 2);
   // A kill mid-write leaves half a line: it must be ignored and that trial redone.
@@ -63,9 +69,7 @@ TEST(Batch, ResumesWithoutRedoingOrLosingTrials) {
 TEST(Batch, TwoShardsMergeIntoTheSameTableAsOneRun) {
   const Config cfg = TinyBench();
   const auto trials = ListTrials(cfg.bench);
-  BatchOptions whole;
-  whole.out_dir = FreshDir("whole");
-  whole.progress = false;
+  BatchOptions whole = QuietBatch("whole");
   RunBatch(cfg, whole, trials);
   BatchOptions a = whole, b = whole;
   a.out_dir = FreshDir("shard0");
@@ -85,9 +89,7 @@ TEST(Batch, TwoShardsMergeIntoTheSameTableAsOneRun) {
 TEST(Batch, AThrowingAndACrashingTrialAreRecordedAndTheRestFinish) {
   const Config cfg = TinyBench();
   const auto trials = ListTrials(cfg.bench);
-  BatchOptions o;
-  o.out_dir = FreshDir("failures");
-  o.progress = false;
+  BatchOptions o = QuietBatch("failures");
   o.fail_key = trials[1].Key();
   o.crash_key = trials[4].Key();
   const BatchSummary s = RunBatch(cfg, o, trials);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <functional>
 
 #include "core/error.h"
 #include "core/rng.h"
@@ -35,11 +36,12 @@ Observation Obs(const core::Pose2& pose, std::vector<Detection> dets) {
 }
 
 // The four corners of the square room [0,10]^2 seen from inside: all corners.
-Observation SquareFromInside(const core::Pose2& pose) {
+std::vector<Detection> SquareCorners(const core::Pose2& pose) {
   std::vector<Detection> d;
   for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) d.push_back(Det(pose, c, core::VertexLabel::kCorner));
-  return Obs(pose, d);
+  return d;
 }
+Observation SquareFromInside(const core::Pose2& pose) { return Obs(pose, SquareCorners(pose)); }
 
 MapperOptions SquareOptions() {
   MapperOptions o;
@@ -66,16 +68,15 @@ TEST(Mapper, InjectedFalsePositivesAreRejectedAndPosteriorDoesNotDrop) {
   core::Rng rng(2);
   for (int i = 0; i < 30; ++i) {
     const core::Pose2 pose{5 + 0.05 * i, 5, 0.0};
-    Observation z = SquareFromInside(pose);
+    std::vector<Detection> d = SquareCorners(pose);
     if (i % 6 == 0) {  // 5 of 30 observations carry a false detection in open space (vertexnav.md §3.3)
       Detection fp;
       fp.range = i % 12 == 0 ? 2.0 : 0.5;
       fp.bearing = 0.0;
       fp.polar = {1.0, 0, 0.5};
-      z.detections.push_back(fp);
-      std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
+      d.push_back(fp);
     }
-    m.AddObservation(z);
+    m.AddObservation(Obs(pose, d));
   }
   EXPECT_GT(m.PotentialVertices().size(), 4u);
   const double before = m.LogPosterior();
@@ -93,21 +94,28 @@ TEST(Mapper, InjectedFalsePositivesAreRejectedAndPosteriorDoesNotDrop) {
 
 // The square room seen from inside, each observation with one false detection somewhere on the wall y = 0
 // (a new place every time, so none gathers enough detections to become a map vertex).
-MapView SquareWithFalseDetectionsOnAWall(double on_segment_tolerance) {
-  MapperOptions o = SquareOptions();
-  o.wall_on_segment_tolerance = on_segment_tolerance;
+// 30 observations from poses drifting through the room (detections from 'seen'), MCMC every 5 and at the end.
+MapView DriveThroughSquare(const MapperOptions& o, uint64_t seed,
+                           const std::function<std::vector<Detection>(int, const core::Pose2&)>& seen) {
   Mapper m(o);
-  core::Rng rng(5);
+  core::Rng rng(seed);
   for (int i = 0; i < 30; ++i) {
-    const core::Pose2 pose{5 + 0.03 * i, 5, 0.0};
-    Observation z = SquareFromInside(pose);
-    z.detections.push_back(Det(pose, {1.0 + 0.27 * i, 0.0}, core::VertexLabel::kPoint));
-    std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
-    m.AddObservation(z);
+    const core::Pose2 pose{5 + 0.03 * i, 5, 0.05 * i};
+    m.AddObservation(Obs(pose, seen(i, pose)));
     if (i % 5 == 4) m.SampleMostLikelyMap(rng);
   }
   m.SampleMostLikelyMap(rng);
   return m.View();
+}
+
+MapView SquareWithFalseDetectionsOnAWall(double on_segment_tolerance) {
+  MapperOptions o = SquareOptions();
+  o.wall_on_segment_tolerance = on_segment_tolerance;
+  return DriveThroughSquare(o, 5, [](int i, const core::Pose2& pose) {
+    std::vector<Detection> d = SquareCorners(pose);
+    d.push_back(Det(pose, {1.0 + 0.27 * i, 0.0}, core::VertexLabel::kPoint));
+    return d;
+  });
 }
 
 bool HasWall(const MapView& view, Vec2 a, Vec2 b) {
@@ -137,18 +145,12 @@ TEST(Mapper, MappedDoorwayJambsOnTheWallLineKeepTheDoorwayOpen) {
   // The square room with a doorway from (4,0) to (6,0): the jambs lie on the line between the corners
   // (0,0) and (10,0), whose labels say a wall runs on; once the jambs are mapped they still damp that
   // pair's evidence, so no wall closes the doorway.
-  Mapper m(SquareOptions());
-  core::Rng rng(6);
-  for (int i = 0; i < 30; ++i) {
-    const core::Pose2 pose{5 + 0.03 * i, 5, 0.05 * i};
-    std::vector<Detection> d;
-    for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) d.push_back(Det(pose, c, core::VertexLabel::kCorner));
+  const MapView view = DriveThroughSquare(SquareOptions(), 6, [](int, const core::Pose2& pose) {
+    std::vector<Detection> d = SquareCorners(pose);
     d.push_back(Det(pose, {4, 0}, core::VertexLabel::kLeftGap));   // no wall counter-clockwise (the doorway)
     d.push_back(Det(pose, {6, 0}, core::VertexLabel::kRightGap));  // no wall clockwise
-    m.AddObservation(Obs(pose, d));
-    if (i % 5 == 4) m.SampleMostLikelyMap(rng);
-  }
-  const MapView view = m.View();
+    return d;
+  });
   EXPECT_EQ(view.vertices.size(), 6u);
   EXPECT_TRUE(HasWall(view, {0, 0}, {4, 0}));
   EXPECT_TRUE(HasWall(view, {6, 0}, {10, 0}));
