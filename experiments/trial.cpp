@@ -19,12 +19,10 @@ namespace toponav::experiments {
 using core::Vec2;
 
 double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map) {
-  const auto& b = world.bounds;
-  mapping::PolygonSet region = mapping::PolygonSet::FromRing({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}});
-  region.Difference(KnownSet(map));
+  const mapping::PolygonSet found = KnownSet(map).Holes();
   std::vector<mapping::PolygonSet> buildings;
   for (const auto& o : world.obstacles) buildings.push_back(mapping::PolygonSet::FromRing(o));
-  return mapping::IoU(region, mapping::PolygonSet::JoinAll(buildings));
+  return mapping::IoU(found, mapping::PolygonSet::JoinAll(buildings));
 }
 
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,

@@ -50,8 +50,10 @@ struct TrialResult {
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& options,
                            uint64_t seed, mapping::MapView* final_view = nullptr);
 
-// Office park metric (paper footnote): IoU of the true buildings and the space inside the search region the map
-// has not marked free (so unexplored space and spurious obstacles both count against it).
+// Office park metric (paper footnote: buildings detected in the right places, no spurious ones), as the reference
+// computes it: IoU of the true buildings and the holes of the known space, i.e. the places the map has enclosed
+// without marking them free.  A building not walked all the way around is not enclosed and counts as missed;
+// open ground the search never needed to see (far from every building) does not count.
 double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map);
 
 }  // namespace toponav::experiments

@@ -43,6 +43,11 @@ struct MapperOptions {
   // (within max_range), so open ground becomes known; the region's edge is never a frontier.
   std::optional<core::Aabb2> open_region;
   double open_sample_step = 0.1;          // radians between the rays that trace such a gap's far side
+  // Open worlds: the search is for buildings, so known-space boundary farther than this from every vertex
+  // with enough detections (mapped or not) is where the search ends, like the region's edge: open ground
+  // far from all structure is no frontier (the reference explores only toward inflated map vertices).
+  // 0: every piece of boundary in the region is frontier.
+  double open_frontier_reach = 60.0;
   void Validate() const;                  // throws core::ConfigError ("mapping.association_gate_chi2", ...)
 };
 

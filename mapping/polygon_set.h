@@ -31,6 +31,8 @@ class PolygonSet {
   // Joins many sets at once (divide and conquer, much faster than joining one by one).
   static PolygonSet JoinAll(const std::vector<PolygonSet>& sets);
 
+  // The bounded regions the set encloses without covering them (the holes of its polygons), exactly.
+  PolygonSet Holes() const;
   bool empty() const;
   double Area() const;
   std::vector<core::Polygon> Polygons() const;

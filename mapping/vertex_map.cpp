@@ -63,6 +63,7 @@ void MapperOptions::Validate() const {
   if (!(star_rebuild_tolerance >= 0)) fail("mapping.star_rebuild_tolerance", star_rebuild_tolerance, "must be >= 0");
   if (union_block < 1) fail("mapping.union_block", union_block, "must be >= 1");
   if (!(frontier_wall_tolerance >= 0)) fail("mapping.frontier_wall_tolerance", frontier_wall_tolerance, "must be >= 0");
+  if (!(open_frontier_reach >= 0)) fail("mapping.open_frontier_reach", open_frontier_reach, "must be >= 0");
   if (!(open_sample_step > 0 && open_sample_step <= 0.5)) fail("mapping.open_sample_step", open_sample_step, "must be in (0, 0.5]");
   if (open_region && !(open_region->max.x > open_region->min.x && open_region->max.y > open_region->min.y))
     fail("mapping.open_region", open_region->width(), "must have a positive width and height");
@@ -828,12 +829,26 @@ struct Mapper::Impl {
              (std::abs(a.y - r.min.y) < tol && std::abs(b.y - r.min.y) < tol) ||
              (std::abs(a.y - r.max.y) < tol && std::abs(b.y - r.max.y) < tol);
     };
+    // ... and so is open ground far from every vertex with enough detections.
+    std::vector<Vec2> structure;
+    if (o.open_region && o.open_frontier_reach > 0)
+      for (size_t i = 0; i < v.size(); ++i)
+        if (v[i].n >= o.min_detections) structure.push_back(Pos(int(i)));
+    auto far_from_structure = [&](const Vec2& a, const Vec2& b) {
+      if (structure.empty()) return false;  // nothing found yet: all of the boundary is frontier
+      const core::Aabb2 box = core::SegmentBox(a, b);
+      for (const Vec2& p : structure)
+        if (core::BoxHits(box, p, o.open_frontier_reach) && core::DistanceToSegment(p, {a, b}) <= o.open_frontier_reach)
+          return false;
+      return true;
+    };
     std::vector<Frontier> out;
     auto walk = [&](const core::Ring& ring) {
       const size_t n = ring.size();
       std::vector<char> free_edge(n);
       for (size_t i = 0; i < n; ++i)
-        free_edge[i] = !on_wall(ring[i], ring[(i + 1) % n]) && !on_region_edge(ring[i], ring[(i + 1) % n]);
+        free_edge[i] = !on_wall(ring[i], ring[(i + 1) % n]) && !on_region_edge(ring[i], ring[(i + 1) % n]) &&
+                       !far_from_structure(ring[i], ring[(i + 1) % n]);
       // Start at a wall edge so chains do not wrap (a ring with no wall is one closed frontier).
       size_t start = 0;
       while (start < n && free_edge[start]) ++start;

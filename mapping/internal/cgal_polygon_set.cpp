@@ -89,6 +89,19 @@ PolygonSet PolygonSet::JoinAll(const std::vector<PolygonSet>& sets) {
   return out;
 }
 
+PolygonSet PolygonSet::Holes() const {
+  // The bounded faces of the complement, taken exactly (converting the hole rings to doubles and back could
+  // make a ring that touches itself cross itself).
+  CPolygonSet complement = impl_->set;
+  complement.complement();
+  std::vector<CPolygonWithHoles> parts;
+  complement.polygons_with_holes(std::back_inserter(parts));
+  PolygonSet out;
+  for (const auto& p : parts)
+    if (!p.is_unbounded()) out.impl_->set.join(p);
+  return out;
+}
+
 bool PolygonSet::empty() const { return impl_->set.is_empty(); }
 
 double PolygonSet::Area() const {

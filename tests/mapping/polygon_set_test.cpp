@@ -40,6 +40,22 @@ TEST(PolygonSet, JoinAllMatchesSequentialJoins) {
   EXPECT_NEAR(PolygonSet::JoinAll(sets).Area(), seq.Area(), 1e-9);
 }
 
+TEST(PolygonSet, HolesAreTheEnclosedRegionsOnly) {
+  // A ring with two holes (one of them holding an island) beside an open notch that is not enclosed.
+  PolygonSet a = PolygonSet::FromRing(testing::Rect(0, 0, 20, 10));
+  a.Difference(PolygonSet::FromRing(testing::Rect(2, 2, 8, 8)));
+  a.Difference(PolygonSet::FromRing(testing::Rect(10, 2, 13, 5)));
+  a.Difference(PolygonSet::FromRing(testing::Rect(15, 0, 18, 6)));  // touches the outer edge: open
+  a.Join(PolygonSet::FromRing(testing::Rect(4, 4, 5, 5)));          // island inside the first hole
+  const PolygonSet holes = a.Holes();
+  EXPECT_DOUBLE_EQ(holes.Area(), 36.0 - 1.0 + 9.0);
+  EXPECT_TRUE(holes.Contains({3, 3}));
+  EXPECT_FALSE(holes.Contains({4.5, 4.5}));
+  EXPECT_FALSE(holes.Contains({16, 3}));
+  EXPECT_TRUE(PolygonSet::FromRing(testing::Rect(0, 0, 1, 1)).Holes().empty());
+  EXPECT_TRUE(PolygonSet().Holes().empty());
+}
+
 TEST(PolygonSet, IoUOfIdenticalAndDisjointRegions) {
   const PolygonSet a = PolygonSet::FromRing(testing::Rect(0, 0, 1, 1));
   const PolygonSet b = PolygonSet::FromRing(testing::Rect(5, 5, 6, 6));

@@ -313,6 +313,36 @@ TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
   EXPECT_FALSE(c.View().known_set->Contains({20, 20}));
 }
 
+// Open ground far from every vertex is where an open-world search ends, not a frontier (open_frontier_reach).
+TEST(Mapper, OpenGroundFarFromEveryVertexIsNoFrontier) {
+  auto frontier_edges_far = [](double reach) {
+    MapperOptions o;
+    o.world_bounds = core::Aabb2{{-150, -150}, {150, 150}};  // larger than the sensor's 100: sight ends inside it
+    o.open_region = o.world_bounds;
+    o.open_frontier_reach = reach;
+    Mapper m(o);
+    core::Rng rng(3);
+    for (int i = 0; i < 20; ++i) {
+      const core::Pose2 pose{-3.0 + 0.3 * i, -20, 0.0};
+      m.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
+    }
+    m.SampleMostLikelyMap(rng);
+    const MapView view = m.View();
+    int near = 0, far = 0;
+    for (const auto& f : view.frontiers)
+      for (size_t i = 1; i < f.points.size(); ++i) {
+        const core::Segment2 e{f.points[i - 1], f.points[i]};
+        const bool close = core::DistanceToSegment({5, 0}, e) <= 60 || core::DistanceToSegment({-5, 0}, e) <= 60;
+        (close ? near : far) += 1;
+      }
+    return std::make_pair(near, far);
+  };
+  const auto [near, far] = frontier_edges_far(60.0);
+  EXPECT_GT(near, 0) << "the unknown space behind the building is still a frontier";
+  EXPECT_EQ(far, 0);
+  EXPECT_GT(frontier_edges_far(0.0).second, 0) << "without the reach the far edge of sight is frontier";
+}
+
 TEST(SolveAssignment, FindsTheMinimumCostOneToOneAssignment) {
   const std::vector<std::vector<double>> cost{{4, 1, 3}, {2, 0, 5}, {3, 2, 2}};
   const auto col = SolveAssignment(cost);
