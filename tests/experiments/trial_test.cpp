@@ -35,6 +35,31 @@ TEST(SearchTrial, SmallWorldIsFullyExploredByOneAndByThreeAgents) {
   }
 }
 
+// Office park metric: a building counts as found when the known space encloses it; open ground the map has
+// not seen does not count against it, and a building never walked around does.
+TEST(BuildingPlacementIoU, CountsEnclosedBuildingsOnly) {
+  core::World w;
+  w.kind = core::WorldKind::kOfficePark;
+  w.obstacles = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{40, 0}, {50, 0}, {50, 10}, {40, 10}}};
+  w.bounds = core::Aabb2{{-20, -20}, {70, 30}};
+  auto view_of = [](const std::vector<core::Polygon>& known) {
+    mapping::MapView v;
+    v.known_space = known;
+    return v;
+  };
+  const core::Ring around_first{{-5, -5}, {15, -5}, {15, 15}, {-5, 15}};
+  const core::Ring first{{0, 10}, {10, 10}, {10, 0}, {0, 0}};  // clockwise: a hole
+  const core::Ring second{{40, 10}, {50, 10}, {50, 0}, {40, 0}};
+  // Both buildings enclosed by known space, unknown ground all around the outside: a perfect score.
+  EXPECT_NEAR(BuildingPlacementIoU(w, view_of({{{{-5, -5}, {55, -5}, {55, 15}, {-5, 15}}, {first, second}}})), 1.0, 1e-9);
+  // Only the first one walked around: half the building area found.
+  EXPECT_NEAR(BuildingPlacementIoU(w, view_of({{around_first, {first}}})), 0.5, 1e-9);
+  // A spurious enclosed obstacle counts against it.
+  const core::Ring spurious{{22, 8}, {28, 8}, {28, 2}, {22, 2}};
+  EXPECT_NEAR(BuildingPlacementIoU(w, view_of({{{{-5, -5}, {55, -5}, {55, 15}, {-5, 15}}, {first, second, spurious}}})),
+              200.0 / 236.0, 1e-9);
+}
+
 TEST(TrialVideo, HasOneFramePerStepAndTheFinalMap) {
   const Config cfg;
   const core::World w = SmallLabyrinth(101);
