@@ -63,6 +63,8 @@ void MapperOptions::Validate() const {
   if (!(star_rebuild_tolerance >= 0)) fail("mapping.star_rebuild_tolerance", star_rebuild_tolerance, "must be >= 0");
   if (union_block < 1) fail("mapping.union_block", union_block, "must be >= 1");
   if (!(frontier_wall_tolerance >= 0)) fail("mapping.frontier_wall_tolerance", frontier_wall_tolerance, "must be >= 0");
+  if (!(frontier_split_angle >= 0 && frontier_split_angle <= core::kPi)) fail("mapping.frontier_split_angle", frontier_split_angle, "must be in [0, pi]");
+  if (!(frontier_split_min_length >= 0)) fail("mapping.frontier_split_min_length", frontier_split_min_length, "must be >= 0");
   if (!(open_frontier_reach >= 0)) fail("mapping.open_frontier_reach", open_frontier_reach, "must be >= 0");
   if (!(open_sample_step > 0 && open_sample_step <= 0.5)) fail("mapping.open_sample_step", open_sample_step, "must be in (0, 0.5]");
   if (open_region && !(open_region->max.x > open_region->min.x && open_region->max.y > open_region->min.y))
@@ -870,6 +872,30 @@ struct Mapper::Impl {
     for (const auto& p : known) {
       walk(p.outer);
       for (const auto& h : p.holes) walk(h);
+    }
+    // A chain that turns sharply (two chords meeting at a corner of the walls, one across a doorway, one
+    // across a corridor) is two frontiers: one target at the chain's middle would sit in the corner, where
+    // neither opening shows.  (Not in open worlds: there the boundary bends around every building's shadow,
+    // and the extra pieces left single agents zigzagging between them.)
+    if (o.frontier_split_angle > 0 && !o.open_region) {
+      std::vector<Frontier> split;
+      for (const auto& f : out) {
+        const size_t n = f.points.size();
+        std::vector<double> at(n, 0.0);  // length along the chain
+        for (size_t i = 1; i < n; ++i) at[i] = at[i - 1] + core::Distance(f.points[i - 1], f.points[i]);
+        size_t from = 0;
+        for (size_t i = 1; i + 1 < n; ++i) {
+          const Vec2 d0 = f.points[i] - f.points[i - 1], d1 = f.points[i + 1] - f.points[i];
+          const double turn = std::abs(std::atan2(core::Cross(d0, d1), core::Dot(d0, d1)));
+          if (turn > o.frontier_split_angle && at[i] - at[from] >= o.frontier_split_min_length &&
+              at[n - 1] - at[i] >= o.frontier_split_min_length) {
+            split.push_back({0, std::vector<Vec2>(f.points.begin() + long(from), f.points.begin() + long(i) + 1), {}, 0.0});
+            from = i;
+          }
+        }
+        split.push_back({0, std::vector<Vec2>(f.points.begin() + long(from), f.points.end()), {}, 0.0});
+      }
+      out = std::move(split);
     }
     for (auto& f : out) {
       for (size_t i = 1; i < f.points.size(); ++i) f.length += core::Distance(f.points[i - 1], f.points[i]);

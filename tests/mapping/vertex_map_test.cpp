@@ -313,6 +313,39 @@ TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
   EXPECT_FALSE(c.View().known_set->Contains({20, 20}));
 }
 
+// Three free-standing points seen from the origin: known space is the fan A-B-C plus the origin, all of its
+// boundary frontier, turning sharply at B and C.  Split there, each opening gets its own frontier (a target
+// at the middle of one long chain would sit in the corner at B).
+TEST(Mapper, FrontierIsSplitWhereItTurnsSharply) {
+  auto frontiers = [](double split_angle) {
+    MapperOptions o;
+    o.frontier_split_angle = split_angle;
+    Mapper m(o);
+    core::Rng rng(5);
+    for (int i = 0; i < 6; ++i) {
+      const core::Pose2 pose{0.0, 0.0, 0.0};
+      m.AddObservation(Obs(pose, {Det(pose, {10, 0}, core::VertexLabel::kPoint), Det(pose, {0, 10}, core::VertexLabel::kPoint),
+                                  Det(pose, {-10, 0}, core::VertexLabel::kPoint)}));
+    }
+    m.SampleMostLikelyMap(rng);
+    return m.View().frontiers;
+  };
+  const auto whole = frontiers(0.0);
+  ASSERT_EQ(whole.size(), 1u);
+  const auto split = frontiers(1.0);
+  ASSERT_EQ(split.size(), 3u);
+  double total = 0;
+  for (const auto& f : split) {
+    EXPECT_GE(f.length, 8.0);
+    total += f.length;
+  }
+  EXPECT_NEAR(total, whole[0].length, 1e-9);
+  // The piece across the opening between A and B has its middle there, not at a corner.
+  bool between_a_b = false;
+  for (const auto& f : split) between_a_b = between_a_b || core::Distance(f.midpoint, {5, 5}) < 0.5;
+  EXPECT_TRUE(between_a_b);
+}
+
 // Open ground far from every vertex is where an open-world search ends, not a frontier (open_frontier_reach).
 TEST(Mapper, OpenGroundFarFromEveryVertexIsNoFrontier) {
   auto frontier_edges_far = [](double reach) {
