@@ -37,7 +37,7 @@ struct MapperOptions {
   double star_rebuild_tolerance = 1.0;    // recompute known space around a map vertex once it drifted this far
   int union_block = 16;                   // observations per cached partial union
   double frontier_wall_tolerance = 1.5;   // known-space boundary this close to a map wall is wall, not frontier
-  double frontier_split_angle = 1.0;      // a frontier turning by more than this (radians) is split there ...
+  double frontier_split_angle = 0.3;      // a frontier turning by more than this (radians) is split there ...
   double frontier_split_min_length = 8.0; // ... if both pieces are at least this long; 0 angle: never split
                                           // (closed worlds only: see Frontiers in vertex_map.cpp)
   std::optional<core::Aabb2> world_bounds;  // if set, observations from outside are rejected
