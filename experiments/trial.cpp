@@ -156,7 +156,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
                           core::Distance(trail[trail.size() - window], s.pose.position()) < step_length;
       if ((!path.empty() && s.distance < 0.1 * step_length) || no_way || pacing) {
         // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward
-        // giving it up as if it stood next to it.
+        // giving it up as if it stood next to it (both, if it is stuck next to it).
         if (c.status == planning::PlanStatus::kFound && ++near_steps[c.frontier_id] > o.give_up_steps)
           given_up.insert(c.frontier_id);
         if (++still[size_t(a)] >= o.stuck_steps) {

@@ -23,7 +23,8 @@ struct TrialOptions {
   double switch_margin = 10.0;  // ... and by more than this
   double give_up_distance = 4.0;  // an agent this close to its frontier target ...
   int give_up_steps = 20;       // ... for this many steps without the frontier going away gives it up
-                                // (after half of them its target is pushed push_distance into unknown space)
+                                // (after half of them its target is pushed push_distance into unknown space);
+                                // a step in which an agent heading for it is stuck counts as well
   double push_distance = 6.0;
   planning::PlannerOptions planner;
   // Called after every step with the map the planners used and the agents' paths so far, and once more
