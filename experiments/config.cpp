@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/geometry.h"
 #include "experiments/internal/yaml_reader.h"
 
 namespace toponav::experiments {
@@ -172,7 +173,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("union_block", &o.union_block, 1, 100000);
     r.Read("frontier_wall_tolerance", &o.frontier_wall_tolerance, 0.0, 100.0);
     r.Read("open_sample_step", &o.open_sample_step, 1e-3, 0.5);
-    r.Read("frontier_split_angle", &o.frontier_split_angle, 0.0, 3.1416);
+    r.Read("frontier_split_angle", &o.frontier_split_angle, 0.0, core::kPi);
     r.Read("frontier_split_min_length", &o.frontier_split_min_length, 0.0, 1000.0);
     r.Read("open_frontier_reach", &o.open_frontier_reach, 0.0, 1000.0);
     r.Finish();

@@ -32,6 +32,8 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   TOPONAV_CHECK(o.stuck_steps >= 1, "stuck_steps " << o.stuck_steps);
   mapping::MapperOptions mo = config.mapping;
   mo.world_bounds = world.bounds;
+  // Split frontiers no shorter than the planner keeps (a split must not make an opening vanish).
+  mo.frontier_split_min_length = std::max(mo.frontier_split_min_length, o.planner.frontier_min_length);
   if (!world.has_boundary()) mo.open_region = world.bounds;  // open world: its bounds are the search region
   mapping::Mapper mapper(mo);
   auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(seed, 1));
@@ -54,7 +56,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   int unreachable = 0;
   // Frontiers an agent reached without them going away (a wall the map has not accepted yet, a sliver) are
   // given up after a while, so they cannot hold a trial forever.  (Frontiers recede as an agent approaches,
-  // so "no progress" alone is not a reason: only dwelling next to the target is.)
+  // so "no progress" alone is not a reason: dwelling next to the target is, and so is being stuck on the way.)
   std::set<int> given_up;
   std::map<int, int> near_steps;
   std::vector<int> committed(size_t(o.num_agents), -1);

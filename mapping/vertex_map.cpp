@@ -71,6 +71,61 @@ void MapperOptions::Validate() const {
     fail("mapping.open_region", open_region->width(), "must have a positive width and height");
 }
 
+std::vector<std::vector<Vec2>> SplitAtTurns(const std::vector<Vec2>& p, double max_turn, double min_length) {
+  const size_t n = p.size();
+  if (n < 3) return {p};
+  std::vector<double> at(n, 0.0);  // length along the chain
+  for (size_t i = 1; i < n; ++i) at[i] = at[i - 1] + core::Distance(p[i - 1], p[i]);
+  const double total = at[n - 1];
+  if (!(total > 0)) return {p};
+  const bool closed = n > 3 && p.front() == p.back();  // a ring: it has no ends
+  // Turns are measured over kSpan of chain on either side, not per edge (exact-to-double conversion leaves
+  // tiny edges pointing anywhere): the points that far before / after point i (wrapping around a ring).
+  constexpr double kSpan = 1.0;
+  auto back = [&](size_t i) {
+    for (size_t k = 1; k < n; ++k) {
+      const size_t j = closed ? (i + (n - 1) - k) % (n - 1) : (i >= k ? i - k : 0);
+      const double d = closed ? std::fmod(at[i] - at[j] + total, total) : at[i] - at[j];
+      if (d >= kSpan || (!closed && j == 0)) return p[j];
+    }
+    return p[i];
+  };
+  auto ahead = [&](size_t i) {
+    for (size_t k = 1; k < n; ++k) {
+      const size_t j = closed ? (i + k) % (n - 1) : std::min(i + k, n - 1);
+      const double d = closed ? std::fmod(at[j] - at[i] + total, total) : at[j] - at[i];
+      if (d >= kSpan || (!closed && j == n - 1)) return p[j];
+    }
+    return p[i];
+  };
+  auto turn = [&](size_t i) {
+    const Vec2 d0 = p[i] - back(i), d1 = ahead(i) - p[i];
+    return std::abs(std::atan2(core::Cross(d0, d1), core::Dot(d0, d1)));
+  };
+  const double min_len = min_length + 1e-6;  // every piece keeps at least min_length
+  std::vector<size_t> cuts;
+  size_t from = 0;
+  for (size_t i = 1; i + 1 < n; ++i)
+    if (at[i] - at[from] >= min_len && total - at[i] >= min_len && turn(i) > max_turn) {
+      cuts.push_back(i);
+      from = i;
+    }
+  // A ring starts wherever it happened to start: its first and last pieces are one unless it turns there too.
+  const bool rejoin = closed && !cuts.empty() && !(turn(0) > max_turn && at[cuts.front()] >= min_len);
+  std::vector<std::vector<Vec2>> pieces;
+  from = 0;
+  for (size_t c : cuts) {
+    pieces.emplace_back(p.begin() + long(from), p.begin() + long(c) + 1);
+    from = c;
+  }
+  pieces.emplace_back(p.begin() + long(from), p.end());
+  if (rejoin) {
+    pieces.back().insert(pieces.back().end(), pieces.front().begin() + 1, pieces.front().end());
+    pieces.erase(pieces.begin());
+  }
+  return pieces;
+}
+
 struct Mapper::Impl {
   struct Vertex {
     Eigen::Vector2d x;
@@ -879,22 +934,9 @@ struct Mapper::Impl {
     // and the extra pieces left single agents zigzagging between them.)
     if (o.frontier_split_angle > 0 && !o.open_region) {
       std::vector<Frontier> split;
-      for (const auto& f : out) {
-        const size_t n = f.points.size();
-        std::vector<double> at(n, 0.0);  // length along the chain
-        for (size_t i = 1; i < n; ++i) at[i] = at[i - 1] + core::Distance(f.points[i - 1], f.points[i]);
-        size_t from = 0;
-        for (size_t i = 1; i + 1 < n; ++i) {
-          const Vec2 d0 = f.points[i] - f.points[i - 1], d1 = f.points[i + 1] - f.points[i];
-          const double turn = std::abs(std::atan2(core::Cross(d0, d1), core::Dot(d0, d1)));
-          if (turn > o.frontier_split_angle && at[i] - at[from] >= o.frontier_split_min_length &&
-              at[n - 1] - at[i] >= o.frontier_split_min_length) {
-            split.push_back({0, std::vector<Vec2>(f.points.begin() + long(from), f.points.begin() + long(i) + 1), {}, 0.0});
-            from = i;
-          }
-        }
-        split.push_back({0, std::vector<Vec2>(f.points.begin() + long(from), f.points.end()), {}, 0.0});
-      }
+      for (const auto& f : out)
+        for (auto& piece : SplitAtTurns(f.points, o.frontier_split_angle, o.frontier_split_min_length))
+          split.push_back({0, std::move(piece), {}, 0.0});
       out = std::move(split);
     }
     for (auto& f : out) {

@@ -313,9 +313,41 @@ TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
   EXPECT_FALSE(c.View().known_set->Contains({20, 20}));
 }
 
+TEST(SplitAtTurns, SplitsAnLAtItsCornerOnly) {
+  const std::vector<Vec2> l{{0, 0}, {10, 0}, {10, 10}};
+  const auto pieces = SplitAtTurns(l, 0.3, 8.0);
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_EQ(pieces[0], (std::vector<Vec2>{{0, 0}, {10, 0}}));
+  EXPECT_EQ(pieces[1], (std::vector<Vec2>{{10, 0}, {10, 10}}));
+  EXPECT_EQ(SplitAtTurns(l, 0.3, 12.0).size(), 1u) << "pieces shorter than the minimum are not made";
+  EXPECT_EQ(SplitAtTurns(l, 2.0, 8.0).size(), 1u) << "a right angle is no turn past 2 rad";
+}
+
+TEST(SplitAtTurns, TinyEdgesOnAStraightLineAreNoTurn) {
+  // A straight chain with a 1e-4 zig-zag in it, as exact-to-double conversion leaves them.
+  const std::vector<Vec2> line{{0, 0}, {10, 0}, {10.0001, 0.0001}, {10.0002, 0}, {20, 0}};
+  EXPECT_EQ(SplitAtTurns(line, 0.3, 8.0).size(), 1u);
+}
+
+TEST(SplitAtTurns, ARingIsSplitAtItsCornersWhereverItStarts) {
+  // A 20 x 20 square ring starting at a corner, and the same ring starting halfway along a side.
+  const std::vector<Vec2> at_corner{{0, 0}, {20, 0}, {20, 20}, {0, 20}, {0, 0}};
+  const std::vector<Vec2> mid_side{{10, 0}, {20, 0}, {20, 20}, {0, 20}, {0, 0}, {10, 0}};
+  for (const auto* ring : {&at_corner, &mid_side}) {
+    const auto pieces = SplitAtTurns(*ring, 0.3, 8.0);
+    ASSERT_EQ(pieces.size(), 4u);
+    for (const auto& piece : pieces) {
+      double length = 0;
+      for (size_t i = 1; i < piece.size(); ++i) length += core::Distance(piece[i - 1], piece[i]);
+      EXPECT_NEAR(length, 20.0, 1e-9) << "each piece is one side, none cut at the ring's start";
+    }
+  }
+}
+
 // Three free-standing points seen from the origin: known space is the fan A-B-C plus the origin, all of its
-// boundary frontier, turning sharply at B and C.  Split there, each opening gets its own frontier (a target
-// at the middle of one long chain would sit in the corner at B).
+// boundary frontier (a ring with no wall), turning sharply at A, B and C and not at all at the origin, between
+// C and A.  Split there, each opening gets its own frontier (a target at the middle of one long chain would
+// sit in the corner at B) -- three whatever point the ring starts at.
 TEST(Mapper, FrontierIsSplitWhereItTurnsSharply) {
   auto frontiers = [](double split_angle) {
     MapperOptions o;
