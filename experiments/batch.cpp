@@ -124,6 +124,24 @@ std::string FormatDuration(double s) {
 
 }  // namespace
 
+std::string BatchStamp(const std::string& config_path) {
+  auto fnv = [](std::istream& in) {
+    uint64_t h = 1469598103934665603ull;
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+      for (std::streamsize i = 0; i < in.gcount(); ++i) h = (h ^ uint8_t(buf[i])) * 1099511628211ull;
+      if (!in) break;
+    }
+    return h;
+  };
+  std::ifstream program("/proc/self/exe", std::ios::binary);
+  std::ifstream config(config_path, std::ios::binary);
+  if (!config) throw core::DataError(config_path, "cannot read the config");
+  std::ostringstream os;
+  os << std::hex << "program-" << (program ? fnv(program) : 0) << "-config-" << fnv(config);
+  return os.str();
+}
+
 BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::vector<TrialId>& all) {
   const auto t0 = std::chrono::steady_clock::now();
   TOPONAV_CHECK(o.shard_count >= 1 && o.shard_index >= 0 && o.shard_index < o.shard_count,
@@ -134,6 +152,26 @@ BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::ve
                                                                       : "trials-" + std::to_string(o.shard_index) + "-of-" +
                                                                             std::to_string(o.shard_count) + ".jsonl"))
                              .string();
+  if (o.fresh)
+    for (const auto& e : fs::directory_iterator(o.out_dir)) {
+      const std::string name = e.path().filename().string();
+      if (name == "batch-stamp.txt" || (name.rfind("trials", 0) == 0 && e.path().extension() == ".jsonl")) fs::remove(e.path());
+    }
+  if (!o.stamp.empty()) {
+    // Trials are pure functions of (program, config, seed): only resume what this program and config made.
+    const std::string stamp_file = (fs::path(o.out_dir) / "batch-stamp.txt").string();
+    std::string old;
+    if (std::ifstream in(stamp_file); in) std::getline(in, old);
+    bool has_trials = false;
+    for (const auto& e : fs::directory_iterator(o.out_dir))
+      has_trials = has_trials || (e.path().filename().string().rfind("trials", 0) == 0 && e.path().extension() == ".jsonl");
+    if (has_trials && old != o.stamp)
+      throw core::DataError(stamp_file, old.empty() ? "the directory holds trials of an unknown build or config (no stamp): "
+                                                      "use another --out, or --fresh to discard them"
+                                                    : "the directory's trials came from another build or config (stamp " + old +
+                                                          ", now " + o.stamp + "): use another --out, or --fresh to discard them");
+    std::ofstream(stamp_file) << o.stamp << "\n";
+  }
   // Resume: whatever this directory already holds is done.
   std::set<std::string> done;
   for (const auto& r : ReadResults({o.out_dir})) done.insert(r.id.Key());

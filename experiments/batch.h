@@ -31,6 +31,10 @@ struct BatchOptions {
   bool progress = true;         // progress and ETA on stderr
   std::string fail_key;         // testing: this trial throws
   std::string crash_key;        // testing: this trial's process crashes (SIGSEGV)
+  // What produced the trials (the program and the config): written to DIR/batch-stamp.txt; resuming a
+  // directory whose stamp differs is an error (its trials came from another build or config).  Empty: no check.
+  std::string stamp;
+  bool fresh = false;           // discard the directory's trials (and stamp) first
 };
 
 struct BatchSummary {
@@ -43,6 +47,9 @@ struct BatchSummary {
 };
 
 BatchSummary RunBatch(const Config& config, const BatchOptions& options, const std::vector<TrialId>& trials);
+
+// A stamp for BatchOptions::stamp: a hash of the running program's file and of the config file's text.
+std::string BatchStamp(const std::string& config_path);
 
 // One line of a results file.
 struct TrialRecord {

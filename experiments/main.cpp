@@ -358,6 +358,7 @@ int RunBench(BenchArgs a) {
   if (cfg.bench.rows.empty()) throw core::ConfigError(a.config, "bench.rows", "[]", "list at least one row");
   a.batch.out_dir = a.out.empty() ? "results/" + cfg.bench.name : a.out;
   a.batch.progress = !a.quiet;
+  a.batch.stamp = experiments::BatchStamp(a.config);
   if (!a.shard.empty()) {
     const auto slash = a.shard.find('/');
     try {
@@ -485,6 +486,7 @@ int main(int argc, char** argv) {
   bench->add_option("--seeds", ba.seeds, "Override the config's seeds: N or A-B");
   bench->add_option("--max-trials", ba.batch.max_new_trials, "Stop after this many new trials (resume later)")->check(CLI::Range(0, 100000000));
   bench->add_flag("--quiet", ba.quiet, "No progress lines");
+  bench->add_flag("--fresh", ba.batch.fresh, "Discard the results directory's trials first (they came from another build or config)");
   bench->add_option("--fail-trial", ba.batch.fail_key, "Testing: make this trial (e.g. labyrinth/a1/s10000) throw")->group("");
   bench->add_option("--crash-trial", ba.batch.crash_key, "Testing: make this trial's process crash")->group("");
 

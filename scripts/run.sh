@@ -7,5 +7,6 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 bash scripts/setup.sh
 build_dir="${TOPONAV_BUILD_DIR:-build}"
-"$build_dir/toponav" bench --config configs/search/quick.yaml "$@"
+# --fresh: a rebuilt program must not resume the trials an older build left there.
+"$build_dir/toponav" bench --config configs/search/quick.yaml --fresh "$@"
 echo "pictures: results/search_quick/pictures/ (or under --out)"

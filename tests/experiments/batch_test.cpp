@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -64,6 +66,25 @@ TEST(Batch, ResumesWithoutRedoingOrLosingTrials) {
   for (const auto& r : records) keys.insert(r.id.Key());
   EXPECT_EQ(keys.size(), 6u);
   EXPECT_EQ(RunBatch(cfg, o, trials).ran, 0) << "a finished batch has nothing left to do";
+}
+
+TEST(Batch, ResumesOnlyTrialsOfTheSameStampAndFreshDiscardsTheRest) {
+  const Config cfg = TinyBench();
+  const auto trials = ListTrials(cfg.bench, {});
+  BatchOptions o = QuietBatch("stamp");
+  o.stamp = "program-a-config-a";
+  o.max_new_trials = 2;
+  EXPECT_EQ(RunBatch(cfg, o, trials).ran, 2);
+  o.max_new_trials = 1;
+  EXPECT_EQ(RunBatch(cfg, o, trials).already_done, 2) << "the same stamp resumes";
+  o.stamp = "program-b-config-a";
+  EXPECT_THROW(RunBatch(cfg, o, trials), core::DataError) << "another build's trials are not taken as done";
+  EXPECT_EQ(CountLines(o.out_dir), 3) << "and are left as they were";
+  o.fresh = true;
+  const BatchSummary s = RunBatch(cfg, o, trials);
+  EXPECT_EQ(s.already_done, 0);
+  EXPECT_EQ(s.ran, 1);
+  EXPECT_EQ(CountLines(o.out_dir), 1);
 }
 
 TEST(Batch, TwoShardsMergeIntoTheSameTableAsOneRun) {
