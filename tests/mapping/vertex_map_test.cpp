@@ -280,12 +280,9 @@ TEST(OpenStarPolygon, RangeAndBlockersStopSightLines) {
   EXPECT_TRUE(core::Contains(clipped, {3, 3.5}));
 }
 
-// A square building [-5,5] x [0,10] in an open region, seen from below: its front corners, labelled with the
-// wall on their building side.
-TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
-  MapperOptions o;
-  o.world_bounds = core::Aabb2{{-50, -50}, {50, 50}};
-  o.open_region = o.world_bounds;
+// A square building [-5,5] x [0,10] seen from below (20 poses along y = -20): its front corners, labelled with
+// the wall on their building side; then one MCMC call.
+MapView MapOfBuildingSeenFromBelow(const MapperOptions& o) {
   Mapper m(o);
   core::Rng rng(3);
   for (int i = 0; i < 20; ++i) {
@@ -293,7 +290,14 @@ TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
     m.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
   }
   m.SampleMostLikelyMap(rng);
-  const MapView view = m.View();
+  return m.View();
+}
+
+TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
+  MapperOptions o;
+  o.world_bounds = core::Aabb2{{-50, -50}, {50, 50}};
+  o.open_region = o.world_bounds;
+  const MapView view = MapOfBuildingSeenFromBelow(o);
   ASSERT_EQ(view.walls.size(), 1u);
   ASSERT_TRUE(view.known_set);
   EXPECT_TRUE(view.known_set->Contains({20, 20})) << "open ground beside the building is seen";
@@ -304,13 +308,7 @@ TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
   // Without the open region only the fans between the two corners are known.
   MapperOptions closed = o;
   closed.open_region.reset();
-  Mapper c(closed);
-  for (int i = 0; i < 20; ++i) {
-    const core::Pose2 pose{-3.0 + 0.3 * i, -20, 0.0};
-    c.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
-  }
-  c.SampleMostLikelyMap(rng);
-  EXPECT_FALSE(c.View().known_set->Contains({20, 20}));
+  EXPECT_FALSE(MapOfBuildingSeenFromBelow(closed).known_set->Contains({20, 20}));
 }
 
 TEST(SplitAtTurns, SplitsAnLAtItsCornerOnly) {
@@ -385,14 +383,7 @@ TEST(Mapper, OpenGroundFarFromEveryVertexIsNoFrontier) {
     o.world_bounds = core::Aabb2{{-150, -150}, {150, 150}};  // larger than the sensor's 100: sight ends inside it
     o.open_region = o.world_bounds;
     o.open_frontier_reach = reach;
-    Mapper m(o);
-    core::Rng rng(3);
-    for (int i = 0; i < 20; ++i) {
-      const core::Pose2 pose{-3.0 + 0.3 * i, -20, 0.0};
-      m.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
-    }
-    m.SampleMostLikelyMap(rng);
-    const MapView view = m.View();
+    const MapView view = MapOfBuildingSeenFromBelow(o);
     int near = 0, far = 0;
     for (const auto& f : view.frontiers)
       for (size_t i = 1; i < f.points.size(); ++i) {
