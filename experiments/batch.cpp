@@ -122,6 +122,15 @@ std::string FormatDuration(double s) {
   return os.str();
 }
 
+// The results files of a directory (its .jsonl files: trials.jsonl and the shards' trials-i-of-N.jsonl), sorted.
+std::vector<fs::path> ResultFiles(const std::string& dir) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".jsonl") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 }  // namespace
 
 std::string BatchStamp(const std::string& config_path) {
@@ -152,20 +161,16 @@ BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::ve
                                                                       : "trials-" + std::to_string(o.shard_index) + "-of-" +
                                                                             std::to_string(o.shard_count) + ".jsonl"))
                              .string();
-  if (o.fresh)
-    for (const auto& e : fs::directory_iterator(o.out_dir)) {
-      const std::string name = e.path().filename().string();
-      if (name == "batch-stamp.txt" || (name.rfind("trials", 0) == 0 && e.path().extension() == ".jsonl")) fs::remove(e.path());
-    }
+  const std::string stamp_file = (fs::path(o.out_dir) / "batch-stamp.txt").string();
+  if (o.fresh) {
+    for (const auto& f : ResultFiles(o.out_dir)) fs::remove(f);
+    fs::remove(stamp_file);
+  }
   if (!o.stamp.empty()) {
     // Trials are pure functions of (program, config, seed): only resume what this program and config made.
-    const std::string stamp_file = (fs::path(o.out_dir) / "batch-stamp.txt").string();
     std::string old;
     if (std::ifstream in(stamp_file); in) std::getline(in, old);
-    bool has_trials = false;
-    for (const auto& e : fs::directory_iterator(o.out_dir))
-      has_trials = has_trials || (e.path().filename().string().rfind("trials", 0) == 0 && e.path().extension() == ".jsonl");
-    if (has_trials && old != o.stamp)
+    if (!ResultFiles(o.out_dir).empty() && old != o.stamp)
       throw core::DataError(stamp_file, old.empty() ? "the directory holds trials of an unknown build or config (no stamp): "
                                                       "use another --out, or --fresh to discard them"
                                                     : "the directory's trials came from another build or config (stamp " + old +
@@ -278,11 +283,7 @@ std::vector<TrialRecord> ReadResults(const std::vector<std::string>& dirs) {
   std::map<std::string, TrialRecord> by_key;
   for (const auto& dir : dirs) {
     if (!fs::is_directory(dir)) throw core::DataError(dir, "not a directory");
-    std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().extension() == ".jsonl") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    for (const auto& f : files) {
+    for (const auto& f : ResultFiles(dir)) {
       std::ifstream in(f);
       std::string line;
       while (std::getline(in, line)) {
