@@ -176,6 +176,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("frontier_split_angle", &o.frontier_split_angle, 0.0, core::kPi);
     r.Read("frontier_split_min_length", &o.frontier_split_min_length, 0.0, 1000.0);
     r.Read("open_frontier_reach", &o.open_frontier_reach, 0.0, 1000.0);
+    r.Read("known_space_candidates", &o.known_space_candidates);
     r.Finish();
   }
   {

@@ -34,6 +34,11 @@ struct MapperOptions {
   bool defer_to_mcmc = true;              // new vertices and walls enter the map only through MCMC; set false
                                           // to build without MCMC (every vertex with enough detections kept)
   double max_range = 100.0;               // range of hypothetical observations
+  // Closed worlds: known space keeps what an observation saw up to its detected vertices that have enough
+  // detections even where the posterior leaves them out of the map (the sensor's false positives lie on
+  // walls, so the space in front of them was seen); without it, a long wall whose far corner is out of
+  // range is cut off by a chord from its near corner, and the chord is a frontier that follows the agent.
+  bool known_space_candidates = true;
   double star_rebuild_tolerance = 1.0;    // recompute known space around a map vertex once it drifted this far
   int union_block = 16;                   // observations per cached partial union
   double frontier_wall_tolerance = 1.5;   // known-space boundary this close to a map wall is wall, not frontier

@@ -558,7 +558,8 @@ struct Mapper::Impl {
   // The hypothetical observation of observation i (paper Sec. III-B; vertexnav.md §2.6): mapped vertices in
   // range, inside or on the real observation's star polygon, not hidden by a mapped wall; by bearing.
   std::vector<int> Hypothetical(const Obs& ob, const MapState& ms,
-                                const std::vector<std::pair<int, int>>& extra_walls = {}) const {
+                                const std::vector<std::pair<int, int>>& extra_walls = {},
+                                bool with_candidates = false) const {
     const Vec2 p = ob.pose.position();
     std::vector<std::pair<int, int>> near_walls;
     for (const auto* list : {&ms.walls, &extra_walls})
@@ -580,7 +581,9 @@ struct Mapper::Impl {
     };
     for (size_t k = 0; k < ob.vid.size(); ++k) {
       const int id = ob.vid[k];
-      if (ms.mapped[size_t(id)] && std::find(ob.vid.begin(), ob.vid.begin() + long(k), id) == ob.vid.begin() + long(k))
+      const bool candidate = with_candidates && v[size_t(id)].n >= o.min_detections;
+      if ((ms.mapped[size_t(id)] || candidate) &&
+          std::find(ob.vid.begin(), ob.vid.begin() + long(k), id) == ob.vid.begin() + long(k))
         consider(id, true);
     }
     if (!ob.star.empty() && star_cache) {
@@ -799,7 +802,7 @@ struct Mapper::Impl {
       for (size_t k = 0; k < changed_walls.size() && !check; ++k)
         check = BoxHitsSegment(ob.box, Pos(changed_walls[k].first), Pos(changed_walls[k].second), 1e-6);
       if (!check) continue;
-      const std::vector<int> H = Hypothetical(ob, ms, closing);
+      const std::vector<int> H = Hypothetical(ob, ms, closing, o.known_space_candidates && !o.open_region);
       bool moved = false;  // a vertex of this S_c got a new known-space position
       for (int id : ob.sc_ids) moved = moved || std::find(changed_vertices.begin(), changed_vertices.end(), id) != changed_vertices.end();
       std::vector<uint64_t> hit_walls;

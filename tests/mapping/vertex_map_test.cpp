@@ -399,6 +399,42 @@ TEST(Mapper, OpenGroundFarFromEveryVertexIsNoFrontier) {
   EXPECT_GT(frontier_edges_far(0.0).second, 0) << "without the reach the far edge of sight is frontier";
 }
 
+// The closed end of a long corridor (walls y = 0 and y = 20, far end out of range): only the end's two corners
+// are ever mapped; a spot on the wall y = 20 is detected in a third of the observations (the sensor's false
+// positives on walls gather into such candidates), so the posterior leaves it out.
+MapView CorridorEndWithACandidateOnAWall(bool candidates, std::vector<MapVertex>* potential) {
+  MapperOptions o;
+  o.world_bounds = core::Aabb2{{-10, -10}, {300, 30}};
+  o.known_space_candidates = candidates;
+  Mapper m(o);
+  core::Rng rng(7);
+  for (int i = 0; i < 30; ++i) {
+    const core::Pose2 pose{10 + 0.2 * i, 10, 0.0};
+    std::vector<Detection> d{Det(pose, {0, 0}, core::VertexLabel::kCorner), Det(pose, {0, 20}, core::VertexLabel::kCorner)};
+    if (i % 3 == 0) d.push_back(Det(pose, {60, 20}, core::VertexLabel::kPoint));
+    m.AddObservation(Obs(pose, d));
+    if (i % 5 == 4) m.SampleMostLikelyMap(rng);
+  }
+  m.SampleMostLikelyMap(rng);
+  *potential = m.PotentialVertices();
+  return m.View();
+}
+
+TEST(Mapper, KnownSpaceReachesAWallCandidateThePosteriorLeavesOut) {
+  std::vector<MapVertex> potential;
+  const MapView with = CorridorEndWithACandidateOnAWall(true, &potential);
+  ASSERT_EQ(with.vertices.size(), 2u) << "only the corridor end's corners are mapped";
+  bool candidate = false;
+  for (const auto& v : potential) candidate = candidate || (core::Distance(v.position, {60, 20}) < 1.0 && v.num_detections >= 3);
+  ASSERT_TRUE(candidate) << "the spot on the wall has enough detections to be a candidate";
+  const Vec2 in_front{50, 17};  // seen free: between the agent and the candidate on the wall
+  auto known = [](const MapView& v, Vec2 p) { return v.known_set && v.known_set->Contains(p); };
+  EXPECT_TRUE(known(with, in_front));
+  const MapView without = CorridorEndWithACandidateOnAWall(false, &potential);
+  EXPECT_FALSE(known(without, in_front)) << "the mapped corners alone bound known space by a chord";
+  EXPECT_GT(with.known_area(), without.known_area() + 200.0);
+}
+
 TEST(SolveAssignment, FindsTheMinimumCostOneToOneAssignment) {
   const std::vector<std::vector<double>> cost{{4, 1, 3}, {2, 0, 5}, {3, 2, 2}};
   const auto col = SolveAssignment(cost);
