@@ -25,6 +25,25 @@ double BuildingPlacementIoU(const core::World& world, const mapping::MapView& ma
   return mapping::IoU(found, mapping::PolygonSet::JoinAll(buildings));
 }
 
+void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& frontiers) {
+  if (!ids_.insert(id).second) return;
+  for (const auto& f : frontiers)
+    if (f.id == id)
+      for (size_t i = 1; i < f.points.size(); ++i) edges_.push_back({f.points[i - 1], f.points[i]});
+}
+
+void GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& frontiers) {
+  if (reach_ <= 0) return;
+  for (const auto& f : frontiers) {
+    if (Contains(f.id)) continue;
+    for (const auto& e : edges_)
+      if (core::DistanceToSegment(f.midpoint, e) < reach_) {
+        ids_.insert(f.id);  // (its own polyline adds nothing: it lies where the old one did)
+        break;
+      }
+  }
+}
+
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,
                            mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -57,7 +76,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   // Frontiers an agent reached without them going away (a wall the map has not accepted yet, a sliver) are
   // given up after a while, so they cannot hold a trial forever.  (Frontiers recede as an agent approaches,
   // so "no progress" alone is not a reason: dwelling next to the target is, and so is being stuck on the way.)
-  std::set<int> given_up;
+  GivenUpFrontiers given_up(o.give_up_reach);
   std::map<int, int> near_steps;
   std::vector<int> committed(size_t(o.num_agents), -1);
   for (int step = 0; step < o.max_steps; ++step) {
@@ -77,8 +96,9 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     planning::PlannerOptions po = o.planner;
     po.clearance = std::min(std::max(po.clearance, config.motion.agent_radius + 0.25), 0.9 * po.inflation_radius);
     std::vector<planning::FrontierTarget> targets, original;
+    given_up.Update(view.frontiers);  // the same place under a new id
     for (const auto& t : planning::FrontierTargets(view, po))
-      if ((!open_world || world.bounds.Contains(t.point)) && !given_up.count(t.frontier_id)) targets.push_back(t);
+      if ((!open_world || world.bounds.Contains(t.point)) && !given_up.Contains(t.frontier_id)) targets.push_back(t);
     original = targets;
     // A frontier agents have stood next to for a while without it receding (the map does not take in what
     // lies beyond yet) is pushed through: its target moves into the unknown space behind it, so an agent
@@ -140,7 +160,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       for (const auto& p : agents)
         near = near || core::Distance(p, targets[i].point) < o.give_up_distance ||
                core::Distance(p, original[i].point) < o.give_up_distance;
-      if (near && ++near_steps[targets[i].frontier_id] > o.give_up_steps) given_up.insert(targets[i].frontier_id);
+      if (near && ++near_steps[targets[i].frontier_id] > o.give_up_steps) given_up.GiveUp(targets[i].frontier_id, view.frontiers);
     }
     int stuck = 0;
     for (int a = 0; a < o.num_agents; ++a) {
@@ -160,7 +180,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
         // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward
         // giving it up as if it stood next to it (both, if it is stuck next to it).
         if (c.status == planning::PlanStatus::kFound && ++near_steps[c.frontier_id] > o.give_up_steps)
-          given_up.insert(c.frontier_id);
+          given_up.GiveUp(c.frontier_id, view.frontiers);
         if (++still[size_t(a)] >= o.stuck_steps) {
           // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
           const double ang = rng.Uniform(-core::kPi, core::kPi);

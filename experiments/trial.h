@@ -4,6 +4,7 @@
 // (a team to distinct frontiers), and agents move one step.  A trial is a pure function of its spec.
 #include <cstdint>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@ struct TrialOptions {
                                 // (after half of them its target is pushed push_distance into unknown space);
                                 // a step in which an agent heading for it is stuck counts as well
   double push_distance = 6.0;
+  double give_up_reach = 3.0;   // a new frontier whose midpoint lies this close to a given-up one is given up too
+                                // (the map re-creates the same unmapped wall piece under a new id); 0: off
   planning::PlannerOptions planner;
   // Called after every step with the map the planners used and the agents' paths so far, and once more
   // with the final map the metrics score (videos).
@@ -46,6 +49,24 @@ struct TrialResult {
   // Where the time went: observations and map updates, MCMC, known space and frontiers, planning and motion.
   double time_map_s = 0.0, time_mcmc_s = 0.0, time_known_s = 0.0, time_plan_s = 0.0;
   std::vector<std::vector<core::Vec2>> paths;  // per agent
+};
+
+// Frontiers given up in a trial, by id and by place: the map may re-create the piece of an unmapped wall that
+// was given up under a new id, so a frontier whose midpoint lies within 'reach' of where a given-up one lay
+// is given up as well (reach 0: by id only).
+class GivenUpFrontiers {
+ public:
+  explicit GivenUpFrontiers(double reach) : reach_(reach) {}
+  // Gives up frontier 'id'; its polyline is taken from 'frontiers' if it is there.
+  void GiveUp(int id, const std::vector<mapping::Frontier>& frontiers);
+  // Gives up the frontiers that lie where given-up ones lay.
+  void Update(const std::vector<mapping::Frontier>& frontiers);
+  bool Contains(int id) const { return ids_.count(id) > 0; }
+
+ private:
+  double reach_;
+  std::set<int> ids_;
+  std::vector<core::Segment2> edges_;
 };
 
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& options,

@@ -60,6 +60,29 @@ TEST(BuildingPlacementIoU, CountsEnclosedBuildingsOnly) {
               200.0 / 236.0, 1e-9);
 }
 
+mapping::Frontier MakeFrontier(int id, std::vector<core::Vec2> points) {
+  mapping::Frontier f;
+  f.id = id;
+  f.points = std::move(points);
+  f.midpoint = (f.points.front() + f.points.back()) * 0.5;
+  return f;
+}
+
+TEST(GivenUpFrontiers, TheSamePlaceUnderANewIdStaysGivenUp) {
+  GivenUpFrontiers g(3.0);
+  g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 10}}), MakeFrontier(5, {{20, 0}, {20, 10}})});
+  EXPECT_TRUE(g.Contains(4));
+  EXPECT_FALSE(g.Contains(5)) << "only the frontier named is given up";
+  // The map re-creates the wall piece under id 9 (shifted by a unit), and an opening 10 units away is new.
+  g.Update({MakeFrontier(9, {{1, 2}, {1, 12}}), MakeFrontier(10, {{10, 0}, {10, 10}})});
+  EXPECT_TRUE(g.Contains(9));
+  EXPECT_FALSE(g.Contains(10));
+  GivenUpFrontiers by_id(0.0);
+  by_id.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 10}})});
+  by_id.Update({MakeFrontier(9, {{1, 2}, {1, 12}})});
+  EXPECT_FALSE(by_id.Contains(9)) << "reach 0: by id only";
+}
+
 TEST(TrialVideo, HasOneFramePerStepAndTheFinalMap) {
   const Config cfg;
   const core::World w = SmallLabyrinth(101);
