@@ -155,11 +155,21 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     }
     // A frontier that agents have stood next to for give_up_steps steps in all (not necessarily in a row)
     // without it going away is given up (counted per frontier, so it holds however the team shuffles).
+    // Only agents that stand (moved less than half a step last step) count: one walking along or through
+    // the frontier towards its pushed-through target is still finding out what lies behind it.
+    std::vector<char> standing(size_t(o.num_agents), 1);
+    for (int a = 0; a < o.num_agents; ++a) {
+      const auto& trail = r.paths[size_t(a)];
+      if (o.count_standing_only && trail.size() >= 2)
+        standing[size_t(a)] = core::Distance(trail[trail.size() - 2], trail.back()) < 0.5 * step_length;
+    }
     for (size_t i = 0; i < targets.size(); ++i) {
       bool near = false;
-      for (const auto& p : agents)
-        near = near || core::Distance(p, targets[i].point) < o.give_up_distance ||
-               core::Distance(p, original[i].point) < o.give_up_distance;
+      for (int a = 0; a < o.num_agents; ++a) {
+        const Vec2& p = agents[size_t(a)];
+        near = near || (standing[size_t(a)] && (core::Distance(p, targets[i].point) < o.give_up_distance ||
+                                                core::Distance(p, original[i].point) < o.give_up_distance));
+      }
       if (near && ++near_steps[targets[i].frontier_id] > o.give_up_steps) given_up.GiveUp(targets[i].frontier_id, view.frontiers);
     }
     int stuck = 0;

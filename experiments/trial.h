@@ -27,6 +27,7 @@ struct TrialOptions {
                                 // (after half of them its target is pushed push_distance into unknown space);
                                 // a step in which an agent heading for it is stuck counts as well
   double push_distance = 6.0;
+  bool count_standing_only = true;  // only an agent that stands next to a frontier counts toward giving it up
   double give_up_reach = 3.0;   // a new frontier whose midpoint lies this close to a given-up one is given up too
                                 // (the map re-creates the same unmapped wall piece under a new id); 0: off
   planning::PlannerOptions planner;
