@@ -255,7 +255,7 @@ int RunMap(MapArgs a) {
   if (a.no_mcmc) a.drive.mcmc_every = 0;
   EnsureDir(a.out);
   const std::vector<uint64_t> seeds = a.seeds.empty() ? std::vector<uint64_t>{a.seed} : ParseSeeds(a.seeds);
-  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0;
+  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0;
   for (uint64_t seed : seeds) {
     WorldSource src = a;
     src.seed = seed;
@@ -273,6 +273,7 @@ int RunMap(MapArgs a) {
     j["known_space_iou"] = r.known_space_iou;
     j["map_vertices"] = r.map_vertices;
     j["false_vertices"] = r.false_vertices;
+    j["mean_vertex_error"] = r.mean_vertex_error;
     j["rejected_vertices"] = r.view.rejected.size();
     j["map_walls"] = r.map_walls;
     j["false_walls"] = r.false_walls;
@@ -282,20 +283,21 @@ int RunMap(MapArgs a) {
     j["mean_mcmc_ms"] = r.mean_mcmc_ms;
     j["wall_time_ms"] = ms;
     std::ofstream((fs::path(a.out) / (stem + ".json")).string()) << j.dump(1) << "\n";
-    fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected)  walls {:>3} ({} false)  "
-               "update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
-               seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(),
+    fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
+               "walls {:>3} ({} false)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
+               seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
                r.map_walls, r.false_walls, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
     iou_sum += r.known_space_iou;
     false_sum += r.false_vertices;
+    error_sum += r.mean_vertex_error;
     vert_sum += r.map_vertices;
     wall_false += r.false_walls;
     wall_sum += r.map_walls;
   }
   if (seeds.size() > 1)
-    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} %\n", seeds.size(),
-               iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum, vert_sum,
-               100.0 * wall_false / std::max(1.0, wall_sum));
+    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} %, vertex error {:.2f}\n",
+               seeds.size(), iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
+               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), error_sum / double(seeds.size()));
   return 0;
 }
 

@@ -74,11 +74,17 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
   r.known_space_iou = KnownSpaceIoU(world, r.view);
   const auto truth = core::MapVertices(world);
   r.map_vertices = int(r.view.vertices.size());
+  int matched = 0;
   for (const auto& v : r.view.vertices) {
     double best = std::numeric_limits<double>::infinity();
     for (const auto& t : truth) best = std::min(best, core::Distance(v.position, t));
     r.false_vertices += best > kVertexMatchRadius;
+    if (best <= kVertexMatchRadius) {
+      r.mean_vertex_error += best;
+      ++matched;
+    }
   }
+  if (matched > 0) r.mean_vertex_error /= matched;
   // A map wall is true when its ends match (within the radius) the two ends of one true wall.
   const auto rings = core::MapRings(world);
   auto nearest_ref = [&](const core::Vec2& p, core::VertexRef* ref) {

@@ -27,6 +27,7 @@ struct MapDriveResult {
   double known_space_iou = 0.0;   // known space vs true free space
   int map_vertices = 0;
   int false_vertices = 0;         // map vertices farther than 'vertex_match_radius' from any true vertex
+  double mean_vertex_error = 0.0; // mean distance of the other map vertices to the nearest true vertex
   int map_walls = 0;
   int false_walls = 0;            // map walls whose ends are not (within the radius) the ends of one true wall
   double log_posterior = 0.0;     // of the final map

@@ -60,13 +60,14 @@ TEST(MapDrive, LabyrinthTourBuildsAnAccurateMapAndTheBaselineDoesNot) {
   small.grid_cells = 12;
   small.num_clutter = 10;
   int vertices = 0, false_vertices = 0, base_vertices = 0, base_false = 0;
-  double iou = 0;
+  double iou = 0, vertex_error = 0;
   for (uint64_t seed : {101, 102}) {
     const core::World w = sim::GenerateLabyrinth(small, seed);
     MapDriveOptions o;
     o.seed = seed;
     const auto r = RunMapDrive(w, cfg, o);
     iou += r.known_space_iou / 2;
+    vertex_error += r.mean_vertex_error / 2;
     vertices += r.map_vertices;
     false_vertices += r.false_vertices;
     o.mcmc_every = 0;
@@ -75,6 +76,8 @@ TEST(MapDrive, LabyrinthTourBuildsAnAccurateMapAndTheBaselineDoesNot) {
     base_false += base.false_vertices;
   }
   EXPECT_GE(iou, 0.95);
+  EXPECT_GT(vertex_error, 0.0);
+  EXPECT_LT(vertex_error, 0.5) << "a tour sees each corner many times: the Kalman mean is well inside the noise";
   EXPECT_LE(false_vertices, 0.05 * vertices);
   EXPECT_GT(base_false, 0.2 * base_vertices) << "without MCMC the noisy sensor's false vertices stay in the map";
 }
