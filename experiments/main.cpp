@@ -289,7 +289,7 @@ int RunMap(MapArgs a) {
                r.map_walls, r.false_walls, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
     iou_sum += r.known_space_iou;
     false_sum += r.false_vertices;
-    error_sum += r.mean_vertex_error;
+    error_sum += r.mean_vertex_error * (r.map_vertices - r.false_vertices);  // pooled over matched vertices
     vert_sum += r.map_vertices;
     wall_false += r.false_walls;
     wall_sum += r.map_walls;
@@ -297,7 +297,7 @@ int RunMap(MapArgs a) {
   if (seeds.size() > 1)
     fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} %, vertex error {:.2f}\n",
                seeds.size(), iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
-               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), error_sum / double(seeds.size()));
+               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), error_sum / std::max(1.0, vert_sum - false_sum));
   return 0;
 }
 

@@ -34,14 +34,16 @@ void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& fron
 
 void GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& frontiers) {
   if (reach_ <= 0) return;
-  for (const auto& f : frontiers) {
-    if (Contains(f.id)) continue;
+  auto near = [&](const core::Vec2& p) {
     for (const auto& e : edges_)
-      if (core::DistanceToSegment(f.midpoint, e) < reach_) {
-        ids_.insert(f.id);  // (its own polyline adds nothing: it lies where the old one did)
-        break;
-      }
-  }
+      if (core::DistanceToSegment(p, e) < reach_) return true;
+    return false;
+  };
+  // Its middle and both ends: a longer frontier reaching past the given-up place (an opening beside the
+  // unmapped wall piece) is a new one.
+  for (const auto& f : frontiers)
+    if (!Contains(f.id) && !f.points.empty() && near(f.midpoint) && near(f.points.front()) && near(f.points.back()))
+      ids_.insert(f.id);  // (its own polyline adds nothing: it lies where the old one did)
 }
 
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,

@@ -28,7 +28,7 @@ struct TrialOptions {
                                 // a step in which an agent heading for it is stuck counts as well
   double push_distance = 6.0;
   bool count_standing_only = true;  // only an agent that stands next to a frontier counts toward giving it up
-  double give_up_reach = 3.0;   // a new frontier whose midpoint lies this close to a given-up one is given up too
+  double give_up_reach = 3.0;   // a new frontier lying this close to a given-up one (middle and ends) is given up
                                 // (the map re-creates the same unmapped wall piece under a new id); 0: off
   planning::PlannerOptions planner;
   // Called after every step with the map the planners used and the agents' paths so far, and once more
@@ -53,8 +53,8 @@ struct TrialResult {
 };
 
 // Frontiers given up in a trial, by id and by place: the map may re-create the piece of an unmapped wall that
-// was given up under a new id, so a frontier whose midpoint lies within 'reach' of where a given-up one lay
-// is given up as well (reach 0: by id only).
+// was given up under a new id, so a frontier whose midpoint and ends lie within 'reach' of where given-up
+// ones lay is given up as well (reach 0: by id only).
 class GivenUpFrontiers {
  public:
   explicit GivenUpFrontiers(double reach) : reach_(reach) {}

@@ -183,7 +183,8 @@ struct Mapper::Impl {
   mutable std::vector<char> block_dirty;
   mutable PolygonSet total;
   mutable bool total_valid = false;           // false: rebuild from the blocks on the next update
-  mutable std::vector<char> snap_mapped;      // map membership at the last update
+  mutable std::vector<char> snap_member;      // membership of hypothetical observations at the last update
+                                              // (map vertices, and seen candidates with known_space_candidates)
   mutable std::vector<Vec2> drift_ref;        // where each vertex was when its drift was last flagged
   mutable std::vector<std::pair<int, int>> snap_walls;
   mutable std::vector<Frontier> last_frontiers;
@@ -556,7 +557,9 @@ struct Mapper::Impl {
   }
 
   // The hypothetical observation of observation i (paper Sec. III-B; vertexnav.md §2.6): mapped vertices in
-  // range, inside or on the real observation's star polygon, not hidden by a mapped wall; by bearing.
+  // range, inside or on the real observation's star polygon, not hidden by a mapped wall; by bearing.  With
+  // 'with_candidates' (known space only, never the posterior) also the vertices the observation itself
+  // detected that have enough detections but are not in the map.
   std::vector<int> Hypothetical(const Obs& ob, const MapState& ms,
                                 const std::vector<std::pair<int, int>>& extra_walls = {},
                                 bool with_candidates = false) const {
@@ -764,10 +767,11 @@ struct Mapper::Impl {
   // ------------------------------------------------------------ known space and frontiers
 
   // Known space, incrementally (paper Eq. 2, S_c = union of s(z_i) & s(z_h,i)).  An observation's S_c is
-  // recomputed only when its hypothetical observation changes (vertices or walls entering or leaving the map,
-  // which happens at MCMC calls), not when its vertices drift by Kalman updates; so steps between MCMC
-  // calls only add the new observation's S_c.  An S_c that grew (or is new) is joined into the union
-  // directly; one that shrank forces the union to be rebuilt from the cached per-block unions.
+  // recomputed only when what its hypothetical observation is built from changes: vertices or walls entering
+  // or leaving the map (at MCMC calls), a vertex becoming a seen candidate (known_space_candidates), or one
+  // of these drifting farther than star_rebuild_tolerance by Kalman updates.  An S_c that grew (or is new)
+  // is joined into the union directly; one that shrank forces the union to be rebuilt from the cached
+  // per-block unions.
   void UpdateKnownSpace() const {
     const MapState& ms = ViewMap();
     const std::vector<std::pair<int, int>> closing = ClosingWalls(ms);
@@ -775,17 +779,20 @@ struct Mapper::Impl {
     mw.insert(mw.end(), closing.begin(), closing.end());
     std::sort(mw.begin(), mw.end());
     mw.erase(std::unique(mw.begin(), mw.end()), mw.end());
-    // What changed since the last update: vertices that entered or left the map or drifted farther than the
-    // tolerance since they were last flagged, and walls that entered or left the map.
+    // What changed since the last update: vertices that entered or left the hypothetical observations (the
+    // map, and with candidates the seen candidates) or drifted farther than the tolerance since they were
+    // last flagged, and walls that entered or left the map.
+    const bool with_candidates = o.known_space_candidates && !o.open_region;
     std::vector<int> changed_vertices;
-    snap_mapped.resize(v.size(), 0);
+    snap_member.resize(v.size(), 0);
     drift_ref.resize(v.size(), Vec2{std::numeric_limits<double>::quiet_NaN(), 0});
     for (size_t i = 0; i < v.size(); ++i) {
       const bool drifted = std::isnan(drift_ref[i].x) || core::Distance(drift_ref[i], Pos(int(i))) > o.star_rebuild_tolerance;
       if (drifted) drift_ref[i] = Pos(int(i));
-      if (bool(ms.mapped[i]) != bool(snap_mapped[i]) || (drifted && ms.mapped[i])) {
+      const bool member = ms.mapped[i] || (with_candidates && v[i].n >= o.min_detections);
+      if (member != bool(snap_member[i]) || (drifted && member)) {
         changed_vertices.push_back(int(i));
-        snap_mapped[i] = ms.mapped[i];
+        snap_member[i] = member;
       }
     }
     std::vector<std::pair<int, int>> changed_walls;
@@ -802,7 +809,7 @@ struct Mapper::Impl {
       for (size_t k = 0; k < changed_walls.size() && !check; ++k)
         check = BoxHitsSegment(ob.box, Pos(changed_walls[k].first), Pos(changed_walls[k].second), 1e-6);
       if (!check) continue;
-      const std::vector<int> H = Hypothetical(ob, ms, closing, o.known_space_candidates && !o.open_region);
+      const std::vector<int> H = Hypothetical(ob, ms, closing, with_candidates);
       bool moved = false;  // a vertex of this S_c got a new known-space position
       for (int id : ob.sc_ids) moved = moved || std::find(changed_vertices.begin(), changed_vertices.end(), id) != changed_vertices.end();
       std::vector<uint64_t> hit_walls;

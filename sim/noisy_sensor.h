@@ -24,9 +24,9 @@ struct NoisySensorOptions {
   int merge_bins = 1;                   // detections this close in both range and bearing bins merge into one
   double label_confusion = 0.1;         // the label is replaced by a different one
   double label_softness = 0.3;          // the one-hot label is mixed with a random distribution by this much
-  // The covariance the sensor reports with each detection: about 1.5-3 times its own error (range: the noise
-  // above and 3.125-unit bins, 1.3-3.1; bearing: noise and 0.049-rad bins, 0.02), a margin for merged
-  // neighbours.  The learned sensor reports 5.0 and 0.125 (vertexnav.md appendix); reporting those here
+  // The covariance the sensor reports with each detection: above its own error (range: the noise above and
+  // 3.125-unit bins give 1.3-3.1, so 1.1-2.7 times; bearing: noise and 0.049-rad bins give 0.02, 3 times),
+  // a margin for merged neighbours.  The learned sensor reports 5.0 and 0.125 (vertexnav.md appendix); reporting those here
   // makes association gates so wide that a far corner's detections join its neighbour and the map draws a
   // wall across the building between them.
   double reported_sigma_range = 3.5;

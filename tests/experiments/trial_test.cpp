@@ -73,10 +73,13 @@ TEST(GivenUpFrontiers, TheSamePlaceUnderANewIdStaysGivenUp) {
   g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 10}}), MakeFrontier(5, {{20, 0}, {20, 10}})});
   EXPECT_TRUE(g.Contains(4));
   EXPECT_FALSE(g.Contains(5)) << "only the frontier named is given up";
-  // The map re-creates the wall piece under id 9 (shifted by a unit), and an opening 10 units away is new.
-  g.Update({MakeFrontier(9, {{1, 2}, {1, 12}}), MakeFrontier(10, {{10, 0}, {10, 10}})});
+  // The map re-creates the wall piece under id 9 (shifted by a unit); an opening 10 units away is new, and
+  // so is a frontier that runs on past the given-up piece (an opening beside it) though its middle is close.
+  g.Update({MakeFrontier(9, {{1, 2}, {1, 12}}), MakeFrontier(10, {{10, 0}, {10, 10}}),
+            MakeFrontier(11, {{0, -8}, {0, 18}})});
   EXPECT_TRUE(g.Contains(9));
   EXPECT_FALSE(g.Contains(10));
+  EXPECT_FALSE(g.Contains(11));
   GivenUpFrontiers by_id(0.0);
   by_id.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 10}})});
   by_id.Update({MakeFrontier(9, {{1, 2}, {1, 12}})});

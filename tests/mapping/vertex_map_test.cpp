@@ -402,7 +402,8 @@ TEST(Mapper, OpenGroundFarFromEveryVertexIsNoFrontier) {
 // The closed end of a long corridor (walls y = 0 and y = 20, far end out of range): only the end's two corners
 // are ever mapped; a spot on the wall y = 20 is detected in a third of the observations (the sensor's false
 // positives on walls gather into such candidates), so the posterior leaves it out.
-MapView CorridorEndWithACandidateOnAWall(bool candidates, std::vector<MapVertex>* potential) {
+// With 'every_step', the view (known space, computed incrementally) is taken after every observation too.
+MapView CorridorEndWithACandidateOnAWall(bool candidates, std::vector<MapVertex>* potential, bool every_step = false) {
   MapperOptions o;
   o.world_bounds = core::Aabb2{{-10, -10}, {300, 30}};
   o.known_space_candidates = candidates;
@@ -414,6 +415,7 @@ MapView CorridorEndWithACandidateOnAWall(bool candidates, std::vector<MapVertex>
     if (i % 3 == 0) d.push_back(Det(pose, {60, 20}, core::VertexLabel::kPoint));
     m.AddObservation(Obs(pose, d));
     if (i % 5 == 4) m.SampleMostLikelyMap(rng);
+    if (every_step) m.View();
   }
   m.SampleMostLikelyMap(rng);
   *potential = m.PotentialVertices();
@@ -433,6 +435,10 @@ TEST(Mapper, KnownSpaceReachesAWallCandidateThePosteriorLeavesOut) {
   const MapView without = CorridorEndWithACandidateOnAWall(false, &potential);
   EXPECT_FALSE(known(without, in_front)) << "the mapped corners alone bound known space by a chord";
   EXPECT_GT(with.known_area(), without.known_area() + 200.0);
+  // Computed step by step (a vertex becomes a candidate after some observations saw it), the same known space.
+  const MapView stepwise = CorridorEndWithACandidateOnAWall(true, &potential, true);
+  EXPECT_TRUE(known(stepwise, in_front));
+  EXPECT_NEAR(stepwise.known_area(), with.known_area(), 1e-6 * with.known_area());
 }
 
 TEST(SolveAssignment, FindsTheMinimumCostOneToOneAssignment) {
