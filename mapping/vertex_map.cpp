@@ -183,8 +183,9 @@ struct Mapper::Impl {
   mutable std::vector<char> block_dirty;
   mutable PolygonSet total;
   mutable bool total_valid = false;           // false: rebuild from the blocks on the next update
-  mutable std::vector<char> snap_member;      // membership of hypothetical observations at the last update
-                                              // (map vertices, and seen candidates with known_space_candidates)
+  mutable std::vector<char> snap_mapped;      // map membership at the last update
+  mutable std::vector<char> snap_member;      // ... and membership of hypothetical observations (map vertices,
+                                              // and seen candidates with known_space_candidates)
   mutable std::vector<Vec2> drift_ref;        // where each vertex was when its drift was last flagged
   mutable std::vector<std::pair<int, int>> snap_walls;
   mutable std::vector<Frontier> last_frontiers;
@@ -782,18 +783,24 @@ struct Mapper::Impl {
     // What changed since the last update: vertices that entered or left the hypothetical observations (the
     // map, and with candidates the seen candidates) or drifted farther than the tolerance since they were
     // last flagged, and walls that entered or left the map.
+    // A map vertex is in the hypothetical observation of every observation that sees it; a candidate only in
+    // those of the observations that detected it, so its changes send only those back.
     const bool with_candidates = o.known_space_candidates && !o.open_region;
-    std::vector<int> changed_vertices;
+    std::vector<int> changed_vertices, changed_candidates;  // (ascending)
+    snap_mapped.resize(v.size(), 0);
     snap_member.resize(v.size(), 0);
     drift_ref.resize(v.size(), Vec2{std::numeric_limits<double>::quiet_NaN(), 0});
     for (size_t i = 0; i < v.size(); ++i) {
       const bool drifted = std::isnan(drift_ref[i].x) || core::Distance(drift_ref[i], Pos(int(i))) > o.star_rebuild_tolerance;
       if (drifted) drift_ref[i] = Pos(int(i));
-      const bool member = ms.mapped[i] || (with_candidates && v[i].n >= o.min_detections);
-      if (member != bool(snap_member[i]) || (drifted && member)) {
+      const bool mapped = ms.mapped[i];
+      const bool member = mapped || (with_candidates && v[i].n >= o.min_detections);
+      if (mapped != bool(snap_mapped[i]) || (drifted && mapped))
         changed_vertices.push_back(int(i));
-        snap_member[i] = member;
-      }
+      else if (member != bool(snap_member[i]) || (drifted && member))
+        changed_candidates.push_back(int(i));
+      snap_mapped[i] = mapped;
+      snap_member[i] = member;
     }
     std::vector<std::pair<int, int>> changed_walls;
     std::set_symmetric_difference(mw.begin(), mw.end(), snap_walls.begin(), snap_walls.end(),
@@ -808,10 +815,14 @@ struct Mapper::Impl {
         check = BoxHits(ob.box, Pos(changed_vertices[k]), 1e-6);
       for (size_t k = 0; k < changed_walls.size() && !check; ++k)
         check = BoxHitsSegment(ob.box, Pos(changed_walls[k].first), Pos(changed_walls[k].second), 1e-6);
+      for (size_t k = 0; k < ob.vid.size() && !check && !changed_candidates.empty(); ++k)
+        check = std::binary_search(changed_candidates.begin(), changed_candidates.end(), ob.vid[k]);
       if (!check) continue;
       const std::vector<int> H = Hypothetical(ob, ms, closing, with_candidates);
       bool moved = false;  // a vertex of this S_c got a new known-space position
-      for (int id : ob.sc_ids) moved = moved || std::find(changed_vertices.begin(), changed_vertices.end(), id) != changed_vertices.end();
+      for (int id : ob.sc_ids)
+        moved = moved || std::find(changed_vertices.begin(), changed_vertices.end(), id) != changed_vertices.end() ||
+                std::binary_search(changed_candidates.begin(), changed_candidates.end(), id);
       std::vector<uint64_t> hit_walls;
       const core::Ring sh = HypotheticalStar(ob, H, ms, closing, &hit_walls);
       if (ob.sc_valid && ob.sc_ids == H && ob.sc_walls == hit_walls && !moved) continue;
