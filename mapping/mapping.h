@@ -132,14 +132,14 @@ class Mapper {
   std::unique_ptr<Impl> impl_;
 };
 
-// Builds the star-shaped polygon of points seen from 'center' (vertexnav.md §2.7): points sorted by bearing,
-// the center inserted wherever consecutive bearings are pi or more apart.  Points at the center or at the
-// same bearing as a nearer point are dropped.  Fewer than 2 usable points give an empty ring.
 // Splits a polyline (a ring if its first and last points are equal) where it turns by more than max_turn
 // radians, keeping every piece at least min_length long; consecutive pieces share their end points.
 std::vector<std::vector<core::Vec2>> SplitAtTurns(const std::vector<core::Vec2>& chain, double max_turn,
                                                   double min_length);
 
+// Builds the star-shaped polygon of points seen from 'center' (vertexnav.md §2.7): points sorted by bearing,
+// the center inserted wherever consecutive bearings are pi or more apart.  Points at the center or at the
+// same bearing as a nearer point are dropped.  Fewer than 2 usable points give an empty ring.
 core::Ring StarPolygon(const core::Vec2& center, const std::vector<core::Vec2>& points);
 
 // A point of an open star polygon: whether no wall continues from it counter-clockwise / clockwise (as seen

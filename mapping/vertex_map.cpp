@@ -821,7 +821,7 @@ struct Mapper::Impl {
       const std::vector<int> H = Hypothetical(ob, ms, closing, with_candidates);
       bool moved = false;  // a vertex of this S_c got a new known-space position
       for (int id : ob.sc_ids)
-        moved = moved || std::find(changed_vertices.begin(), changed_vertices.end(), id) != changed_vertices.end() ||
+        moved = moved || std::binary_search(changed_vertices.begin(), changed_vertices.end(), id) ||
                 std::binary_search(changed_candidates.begin(), changed_candidates.end(), id);
       std::vector<uint64_t> hit_walls;
       const core::Ring sh = HypotheticalStar(ob, H, ms, closing, &hit_walls);

@@ -26,9 +26,9 @@ struct NoisySensorOptions {
   double label_softness = 0.3;          // the one-hot label is mixed with a random distribution by this much
   // The covariance the sensor reports with each detection: above its own error (range: the noise above and
   // 3.125-unit bins give 1.3-3.1, so 1.1-2.7 times; bearing: noise and 0.049-rad bins give 0.02, 3 times),
-  // a margin for merged neighbours.  The learned sensor reports 5.0 and 0.125 (vertexnav.md appendix); reporting those here
-  // makes association gates so wide that a far corner's detections join its neighbour and the map draws a
-  // wall across the building between them.
+  // a margin for merged neighbours.  The learned sensor reports 5.0 and 0.125 (vertexnav.md appendix);
+  // reporting those here makes association gates so wide that a far corner's detections join its neighbour
+  // and the map draws a wall across the building between them.
   double reported_sigma_range = 3.5;
   double reported_sigma_bearing = 0.06;
   void Validate() const;                // throws core::ConfigError ("sensor.max_range", ...)
