@@ -25,25 +25,74 @@ double BuildingPlacementIoU(const core::World& world, const mapping::MapView& ma
   return mapping::IoU(found, mapping::PolygonSet::JoinAll(buildings));
 }
 
-void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& frontiers) {
-  if (!ids_.insert(id).second) return;
-  for (const auto& f : frontiers)
-    if (f.id == id)
-      for (size_t i = 1; i < f.points.size(); ++i) edges_.push_back({f.points[i - 1], f.points[i]});
+namespace {
+
+bool Near(const std::vector<core::Segment2>& edges, const Vec2& p, double reach) {
+  for (const auto& e : edges)
+    if (core::DistanceToSegment(p, e) < reach) return true;
+  return false;
 }
 
-void GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& frontiers) {
-  if (reach_ <= 0) return;
-  auto near = [&](const core::Vec2& p) {
-    for (const auto& e : edges_)
-      if (core::DistanceToSegment(p, e) < reach_) return true;
-    return false;
-  };
-  // Its middle and both ends: a longer frontier reaching past the given-up place (an opening beside the
-  // unmapped wall piece) is a new one.
-  for (const auto& f : frontiers)
-    if (!Contains(f.id) && !f.points.empty() && near(f.midpoint) && near(f.points.front()) && near(f.points.back()))
-      ids_.insert(f.id);  // (its own polyline adds nothing: it lies where the old one did)
+// Middle and both ends near: a longer frontier reaching past (an opening beside the unmapped wall piece) is not.
+bool LiesOn(const std::vector<core::Segment2>& edges, const mapping::Frontier& f, double reach) {
+  return !f.points.empty() && Near(edges, f.midpoint, reach) && Near(edges, f.points.front(), reach) &&
+         Near(edges, f.points.back(), reach);
+}
+
+// The part of segment ab within 'radius' of c (false if none).
+bool ClipToDisc(const Vec2& a, const Vec2& b, const Vec2& c, double radius, core::Segment2* out) {
+  const Vec2 d = b - a;
+  const double dd = core::Dot(d, d);
+  if (dd < 1e-18) {
+    *out = {a, b};
+    return core::Distance(a, c) <= radius;
+  }
+  // |a + t d - c|^2 = radius^2
+  const Vec2 f = a - c;
+  const double bq = 2 * core::Dot(f, d), cq = core::Dot(f, f) - radius * radius;
+  const double disc = bq * bq - 4 * dd * cq;
+  if (disc < 0) return false;
+  const double t0 = std::max(0.0, (-bq - std::sqrt(disc)) / (2 * dd)), t1 = std::min(1.0, (-bq + std::sqrt(disc)) / (2 * dd));
+  if (t0 > t1) return false;
+  *out = {a + d * t0, a + d * t1};
+  return true;
+}
+
+}  // namespace
+
+void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& frontiers, const Vec2* probed_at) {
+  if (!ids_.insert(id).second) return;
+  for (const auto& f : frontiers) {
+    if (f.id != id) continue;
+    auto& extent = extent_[id];
+    for (size_t i = 1; i < f.points.size(); ++i) {
+      extent.push_back({f.points[i - 1], f.points[i]});
+      core::Segment2 piece = extent.back();
+      if (!probed_at || probe_radius_ <= 0 || ClipToDisc(f.points[i - 1], f.points[i], *probed_at, probe_radius_, &piece))
+        edges_.push_back(piece);
+    }
+  }
+}
+
+std::vector<int> GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& frontiers) {
+  std::vector<int> back;
+  if (reach_ <= 0) return back;
+  for (const auto& f : frontiers) {
+    if (Contains(f.id)) {
+      const auto it = extent_.find(f.id);
+      // Well past (the boundary of known space wobbles by a few units as the map changes), and once.
+      if (it != extent_.end() && !LiesOn(it->second, f, kRegrowth * reach_) && taken_back_.insert(f.id).second) {
+        ids_.erase(f.id);
+        extent_.erase(it);
+        back.push_back(f.id);
+      }
+    } else if (LiesOn(edges_, f, reach_)) {
+      ids_.insert(f.id);
+      auto& extent = extent_[f.id];
+      for (size_t i = 1; i < f.points.size(); ++i) extent.push_back({f.points[i - 1], f.points[i]});
+    }
+  }
+  return back;
 }
 
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,
@@ -78,7 +127,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   // Frontiers an agent reached without them going away (a wall the map has not accepted yet, a sliver) are
   // given up after a while, so they cannot hold a trial forever.  (Frontiers recede as an agent approaches,
   // so "no progress" alone is not a reason: dwelling next to the target is, and so is being stuck on the way.)
-  GivenUpFrontiers given_up(o.give_up_reach);
+  GivenUpFrontiers given_up(o.give_up_reach, o.give_up_probe_radius);
   std::map<int, int> near_steps;
   std::vector<int> committed(size_t(o.num_agents), -1);
   for (int step = 0; step < o.max_steps; ++step) {
@@ -98,7 +147,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     planning::PlannerOptions po = o.planner;
     po.clearance = std::min(std::max(po.clearance, config.motion.agent_radius + 0.25), 0.9 * po.inflation_radius);
     std::vector<planning::FrontierTarget> targets, original;
-    given_up.Update(view.frontiers);  // the same place under a new id
+    for (int id : given_up.Update(view.frontiers)) near_steps[id] = 0;  // the same place under a new id; grown ones back
     for (const auto& t : planning::FrontierTargets(view, po))
       if ((!open_world || world.bounds.Contains(t.point)) && !given_up.Contains(t.frontier_id)) targets.push_back(t);
     original = targets;
@@ -172,7 +221,8 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
         near = near || (standing[size_t(a)] && (core::Distance(p, targets[i].point) < o.give_up_distance ||
                                                 core::Distance(p, original[i].point) < o.give_up_distance));
       }
-      if (near && ++near_steps[targets[i].frontier_id] > o.give_up_steps) given_up.GiveUp(targets[i].frontier_id, view.frontiers);
+      if (near && ++near_steps[targets[i].frontier_id] > o.give_up_steps)
+        given_up.GiveUp(targets[i].frontier_id, view.frontiers, &original[i].point);
     }
     int stuck = 0;
     for (int a = 0; a < o.num_agents; ++a) {

@@ -4,6 +4,7 @@
 // (a team to distinct frontiers), and agents move one step.  A trial is a pure function of its spec.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -29,6 +30,8 @@ struct TrialOptions {
   double push_distance = 6.0;
   bool count_standing_only = true;  // only an agent that stands next to a frontier counts toward giving it up
   double give_up_reach = 3.0;   // a new frontier lying this close to a given-up one (middle and ends) is given up
+  double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
+                                      // stood (0: all of it)
                                 // (the map re-creates the same unmapped wall piece under a new id); 0: off
   planning::PlannerOptions planner;
   // Called after every step with the map the planners used and the agents' paths so far, and once more
@@ -54,20 +57,28 @@ struct TrialResult {
 
 // Frontiers given up in a trial, by id and by place: the map may re-create the piece of an unmapped wall that
 // was given up under a new id, so a frontier whose midpoint and ends lie within 'reach' of where given-up
-// ones lay is given up as well (reach 0: by id only).
+// ones were probed is given up as well (reach 0: by id only).  Where a frontier was probed: the part of it
+// within 'probe_radius' of the point agents stood at (a long frontier along an unmapped wall may hold an
+// opening farther along that the agent never looked through), or all of it when no point is given.  A
+// given-up frontier that grows well past where it lay when it was given up (its middle or an end farther than
+// 4 'reach' from it) is another frontier now: it is taken back (once).
 class GivenUpFrontiers {
  public:
-  explicit GivenUpFrontiers(double reach) : reach_(reach) {}
+  explicit GivenUpFrontiers(double reach, double probe_radius = 0.0) : reach_(reach), probe_radius_(probe_radius) {}
   // Gives up frontier 'id'; its polyline is taken from 'frontiers' if it is there.
-  void GiveUp(int id, const std::vector<mapping::Frontier>& frontiers);
-  // Gives up the frontiers that lie where given-up ones lay.
-  void Update(const std::vector<mapping::Frontier>& frontiers);
+  void GiveUp(int id, const std::vector<mapping::Frontier>& frontiers, const core::Vec2* probed_at = nullptr);
+  // Gives up the frontiers that lie where given-up ones were probed, and takes back the ones that grew;
+  // returns the ids taken back.
+  std::vector<int> Update(const std::vector<mapping::Frontier>& frontiers);
   bool Contains(int id) const { return ids_.count(id) > 0; }
 
  private:
-  double reach_;
+  double reach_, probe_radius_;
   std::set<int> ids_;
-  std::vector<core::Segment2> edges_;
+  std::vector<core::Segment2> edges_;                 // where given-up frontiers were probed
+  std::map<int, std::vector<core::Segment2>> extent_;  // each given-up frontier's polyline when given up
+  std::set<int> taken_back_;
+  static constexpr double kRegrowth = 4.0;            // taken back when it reaches this many 'reach' past it
 };
 
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& options,

@@ -86,6 +86,39 @@ TEST(GivenUpFrontiers, TheSamePlaceUnderANewIdStaysGivenUp) {
   EXPECT_FALSE(by_id.Contains(9)) << "reach 0: by id only";
 }
 
+TEST(GivenUpFrontiers, OnlyThePartProbedOfALongFrontierStaysGivenUpByPlace) {
+  // A 100-unit frontier along an unmapped wall, probed at its lower end (the agent stood at (0, 10)).
+  GivenUpFrontiers g(3.0, 20.0);
+  const core::Vec2 probed{1, 10};
+  g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &probed);
+  EXPECT_TRUE(g.Contains(4));
+  // Later the map splits it: the piece where the agent stood stays given up, an opening at the far end
+  // (never looked through) is a frontier again.
+  g.Update({MakeFrontier(7, {{0, 5}, {0, 25}}), MakeFrontier(8, {{0, 70}, {0, 90}})});
+  EXPECT_TRUE(g.Contains(7));
+  EXPECT_FALSE(g.Contains(8));
+  // Without a probe radius the whole polyline counts.
+  GivenUpFrontiers whole(3.0, 0.0);
+  whole.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &probed);
+  whole.Update({MakeFrontier(8, {{0, 70}, {0, 90}})});
+  EXPECT_TRUE(whole.Contains(8));
+}
+
+TEST(GivenUpFrontiers, AFrontierThatGrowsWellPastWhereItWasGivenUpIsTakenBackOnce) {
+  GivenUpFrontiers g(3.0, 20.0);
+  g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 20}})});
+  // Wobbling by a few units: still given up.
+  EXPECT_TRUE(g.Update({MakeFrontier(4, {{2, -4}, {2, 24}})}).empty());
+  EXPECT_TRUE(g.Contains(4));
+  // Grown into a long opening under the same id: taken back.
+  EXPECT_EQ(g.Update({MakeFrontier(4, {{0, 0}, {0, 75}})}), std::vector<int>{4});
+  EXPECT_FALSE(g.Contains(4));
+  // Given up again and grown again: it stays given up (no back and forth).
+  g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 20}})});
+  EXPECT_TRUE(g.Update({MakeFrontier(4, {{0, 0}, {0, 75}})}).empty());
+  EXPECT_TRUE(g.Contains(4));
+}
+
 TEST(TrialVideo, HasOneFramePerStepAndTheFinalMap) {
   const Config cfg;
   const core::World w = SmallLabyrinth(101);
