@@ -81,7 +81,8 @@ std::vector<int> GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& 
     if (Contains(f.id)) {
       const auto it = extent_.find(f.id);
       // Well past (the boundary of known space wobbles by a few units as the map changes), and once.
-      if (it != extent_.end() && !LiesOn(it->second, f, kRegrowth * reach_) && taken_back_.insert(f.id).second) {
+      if (it != extent_.end() && !it->second.empty() && !LiesOn(it->second, f, kRegrowth * reach_) &&
+          taken_back_.insert(f.id).second) {
         ids_.erase(f.id);
         extent_.erase(it);
         back.push_back(f.id);

@@ -30,9 +30,9 @@ struct TrialOptions {
   double push_distance = 6.0;
   bool count_standing_only = true;  // only an agent that stands next to a frontier counts toward giving it up
   double give_up_reach = 3.0;   // a new frontier lying this close to a given-up one (middle and ends) is given up
-  double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
-                                      // stood (0: all of it)
                                 // (the map re-creates the same unmapped wall piece under a new id); 0: off
+  double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
+                                       // stood (0: all of it)
   planning::PlannerOptions planner;
   // Called after every step with the map the planners used and the agents' paths so far, and once more
   // with the final map the metrics score (videos).
@@ -57,11 +57,12 @@ struct TrialResult {
 
 // Frontiers given up in a trial, by id and by place: the map may re-create the piece of an unmapped wall that
 // was given up under a new id, so a frontier whose midpoint and ends lie within 'reach' of where given-up
-// ones were probed is given up as well (reach 0: by id only).  Where a frontier was probed: the part of it
-// within 'probe_radius' of the point agents stood at (a long frontier along an unmapped wall may hold an
-// opening farther along that the agent never looked through), or all of it when no point is given.  A
-// given-up frontier that grows well past where it lay when it was given up (its middle or an end farther than
-// 4 'reach' from it) is another frontier now: it is taken back (once).
+// ones were probed is given up as well.  Where a frontier was probed: the part of it within 'probe_radius' of
+// the point agents stood at (a long frontier along an unmapped wall may hold an opening farther along that
+// the agent never looked through), or all of it when no point is given (agents gave it up because they could
+// not get to it).  A given-up frontier that grows well past where it lay when it was given up (its middle or
+// an end farther than 4 'reach' from it) is another frontier now: it is taken back (once).  Reach 0: by id
+// only, and nothing is taken back.
 class GivenUpFrontiers {
  public:
   explicit GivenUpFrontiers(double reach, double probe_radius = 0.0) : reach_(reach), probe_radius_(probe_radius) {}

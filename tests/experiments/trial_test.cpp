@@ -87,7 +87,7 @@ TEST(GivenUpFrontiers, TheSamePlaceUnderANewIdStaysGivenUp) {
 }
 
 TEST(GivenUpFrontiers, OnlyThePartProbedOfALongFrontierStaysGivenUpByPlace) {
-  // A 100-unit frontier along an unmapped wall, probed at its lower end (the agent stood at (0, 10)).
+  // A 100-unit frontier along an unmapped wall, probed near its lower end (the agent stood at (1, 10)).
   GivenUpFrontiers g(3.0, 20.0);
   const core::Vec2 probed{1, 10};
   g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &probed);
@@ -97,6 +97,14 @@ TEST(GivenUpFrontiers, OnlyThePartProbedOfALongFrontierStaysGivenUpByPlace) {
   g.Update({MakeFrontier(7, {{0, 5}, {0, 25}}), MakeFrontier(8, {{0, 70}, {0, 90}})});
   EXPECT_TRUE(g.Contains(7));
   EXPECT_FALSE(g.Contains(8));
+  // Probed at its middle: only the middle stays given up; openings towards either end are frontiers again.
+  GivenUpFrontiers middle(3.0, 20.0);
+  const core::Vec2 at_middle{1, 50};
+  middle.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &at_middle);
+  middle.Update({MakeFrontier(7, {{0, 35}, {0, 65}}), MakeFrontier(8, {{0, 5}, {0, 25}}), MakeFrontier(9, {{0, 75}, {0, 95}})});
+  EXPECT_TRUE(middle.Contains(7));
+  EXPECT_FALSE(middle.Contains(8));
+  EXPECT_FALSE(middle.Contains(9));
   // Without a probe radius the whole polyline counts.
   GivenUpFrontiers whole(3.0, 0.0);
   whole.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &probed);
@@ -113,6 +121,11 @@ TEST(GivenUpFrontiers, AFrontierThatGrowsWellPastWhereItWasGivenUpIsTakenBackOnc
   // Grown into a long opening under the same id: taken back.
   EXPECT_EQ(g.Update({MakeFrontier(4, {{0, 0}, {0, 75}})}), std::vector<int>{4});
   EXPECT_FALSE(g.Contains(4));
+  // One given up by place (a new id where the probed part lay) is taken back when it grows, too.
+  g.Update({MakeFrontier(6, {{1, 2}, {1, 18}})});
+  EXPECT_TRUE(g.Contains(6));
+  EXPECT_EQ(g.Update({MakeFrontier(6, {{1, 2}, {1, 60}})}), std::vector<int>{6});
+  EXPECT_FALSE(g.Contains(6));
   // Given up again and grown again: it stays given up (no back and forth).
   g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 20}})});
   EXPECT_TRUE(g.Update({MakeFrontier(4, {{0, 0}, {0, 75}})}).empty());
