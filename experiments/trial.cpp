@@ -39,6 +39,12 @@ bool LiesOn(const std::vector<core::Segment2>& edges, const mapping::Frontier& f
          Near(edges, f.points.back(), reach);
 }
 
+std::vector<core::Segment2> Edges(const std::vector<Vec2>& polyline) {
+  std::vector<core::Segment2> out;
+  for (size_t i = 1; i < polyline.size(); ++i) out.push_back({polyline[i - 1], polyline[i]});
+  return out;
+}
+
 // The part of segment ab within 'radius' of c (false if none).
 bool ClipToDisc(const Vec2& a, const Vec2& b, const Vec2& c, double radius, core::Segment2* out) {
   const Vec2 d = b - a;
@@ -64,12 +70,10 @@ void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& fron
   if (!ids_.insert(id).second) return;
   for (const auto& f : frontiers) {
     if (f.id != id) continue;
-    auto& extent = extent_[id];
-    for (size_t i = 1; i < f.points.size(); ++i) {
-      extent.push_back({f.points[i - 1], f.points[i]});
-      core::Segment2 piece = extent.back();
-      if (!probed_at || probe_radius_ <= 0 || ClipToDisc(f.points[i - 1], f.points[i], *probed_at, probe_radius_, &piece))
-        edges_.push_back(piece);
+    extent_[id] = Edges(f.points);
+    for (const auto& e : extent_[id]) {
+      core::Segment2 piece = e;
+      if (!probed_at || probe_radius_ <= 0 || ClipToDisc(e.a, e.b, *probed_at, probe_radius_, &piece)) edges_.push_back(piece);
     }
   }
 }
@@ -89,8 +93,7 @@ std::vector<int> GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& 
       }
     } else if (LiesOn(edges_, f, reach_)) {
       ids_.insert(f.id);
-      auto& extent = extent_[f.id];
-      for (size_t i = 1; i < f.points.size(); ++i) extent.push_back({f.points[i - 1], f.points[i]});
+      extent_[f.id] = Edges(f.points);
     }
   }
   return back;
