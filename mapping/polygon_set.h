@@ -28,8 +28,10 @@ class PolygonSet {
   void Join(const PolygonSet& other);        // this = this ∪ other
   void Intersect(const PolygonSet& other);   // this = this ∩ other
   void Difference(const PolygonSet& other);  // this = this \ other
-  // Joins many sets at once (divide and conquer, much faster than joining one by one).
+  // Joins many sets at once (divide and conquer, much faster than joining one by one).  The pointer form
+  // joins sets that live elsewhere without copying them first (null pointers are skipped).
   static PolygonSet JoinAll(const std::vector<PolygonSet>& sets);
+  static PolygonSet JoinAll(const std::vector<const PolygonSet*>& sets);
 
   // The bounded regions the set encloses without covering them (the holes of its polygons), exactly.
   PolygonSet Holes() const;

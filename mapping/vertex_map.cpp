@@ -148,6 +148,8 @@ struct Mapper::Impl {
     core::Pose2 pose;
     std::vector<core::Detection> det;
     std::vector<int> vid;          // vertex of each detection
+    std::vector<Vec2> at;          // each detection's position in the world ...
+    std::vector<Eigen::LDLT<Eigen::Matrix2d>> cov;  // ... and its covariance, factored (for the likelihood)
     // Star polygon of the real observation from the positions its vertices had when it was built.
     core::Ring star;
     core::Aabb2 box;
@@ -292,10 +294,14 @@ struct Mapper::Impl {
     const size_t n = ob.det.size();
     std::vector<Eigen::Vector2d> zpos(n);
     std::vector<Eigen::Matrix2d> R(n);
+    ob.at.resize(n);
+    ob.cov.resize(n);
     for (size_t k = 0; k < n; ++k) {
       const Vec2 p = core::DetectionPosition(z.pose, ob.det[k]);
+      ob.at[k] = p;
       zpos[k] = {p.x, p.y};
       R[k] = ToEigen(core::DetectionCovariance(z.pose, ob.det[k]));
+      ob.cov[k] = R[k].ldlt();
     }
     // Association: rows = detections, columns = gated candidate vertices + one "new vertex" slot per
     // detection.  Cost = squared Mahalanobis distance of the innovation (covariance P + R), plus a bias
@@ -377,8 +383,7 @@ struct Mapper::Impl {
   // the map, so MCMC weighs the jamb and the wall across the door together).
   void AddWallEvidence(const Obs& ob) {
     const size_t n = ob.det.size();
-    std::vector<Vec2> at(n);
-    for (size_t k = 0; k < n; ++k) at[k] = core::DetectionPosition(ob.pose, ob.det[k]);
+    const std::vector<Vec2>& at = ob.at;
     auto on_segment = [&](const Vec2& p, const Vec2& a, const Vec2& b) {
       const Vec2 d = b - a;
       const double len2 = core::Dot(d, d);
@@ -632,10 +637,9 @@ struct Mapper::Impl {
       }
       det_of[slot] = int(k);
       ++matched;
-      const Vec2 z = core::DetectionPosition(ob.pose, ob.det[k]);
+      const Vec2& z = ob.at[k];
       const Eigen::Vector2d e(z.x - v[size_t(ob.vid[k])].x.x(), z.y - v[size_t(ob.vid[k])].x.y());
-      const Eigen::Matrix2d R = ToEigen(core::DetectionCovariance(ob.pose, ob.det[k]));
-      ll += std::max(-0.5 * e.dot(R.ldlt().solve(e)), log_fp);
+      ll += std::max(-0.5 * e.dot(ob.cov[k].solve(e)), log_fp);
     }
     ll += fp * log_fp + (int(H.size()) - matched) * log_fn;
     if (H.size() >= 2) {
@@ -807,7 +811,7 @@ struct Mapper::Impl {
                                   std::back_inserter(changed_walls));
     snap_walls = mw;
     bool rebuild = false;
-    std::vector<PolygonSet> grown;  // new pieces that only add to the known space
+    std::vector<const PolygonSet*> grown;  // new pieces that only add to the known space
     for (size_t i = 0; i < obs.size(); ++i) {
       Obs& ob = const_cast<Obs&>(obs[i]);
       bool check = !ob.sc_valid;
@@ -838,12 +842,11 @@ struct Mapper::Impl {
       }
       bool grew = true;  // a new S_c, or one that contains the old one: joining it is enough
       if (ob.sc_valid && !ob.sc.empty()) {
-        PolygonSet lost = ob.sc;
-        lost.Difference(sc);
-        grew = lost.empty();
+        ob.sc.Difference(sc);  // what the old one loses (it is replaced below)
+        grew = ob.sc.empty();
       }
       if (grew && total_valid) {
-        if (!sc.empty()) grown.push_back(sc);
+        if (!sc.empty()) grown.push_back(&ob.sc);  // (obs does not reallocate during the update)
       } else {
         rebuild = true;
       }
@@ -868,9 +871,9 @@ struct Mapper::Impl {
     }
     for (size_t b = 0; b < blocks.size(); ++b) {
       if (!block_dirty[b]) continue;
-      std::vector<PolygonSet> members;
+      std::vector<const PolygonSet*> members;
       for (size_t i = b * size_t(o.union_block); i < std::min(obs.size(), (b + 1) * size_t(o.union_block)); ++i)
-        if (!obs[i].sc.empty()) members.push_back(obs[i].sc);
+        members.push_back(&obs[i].sc);
       blocks[b] = PolygonSet::JoinAll(members);
       block_dirty[b] = 0;
       union_tree[leaves + b] = blocks[b];

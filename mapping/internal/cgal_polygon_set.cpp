@@ -68,25 +68,40 @@ void PolygonSet::Intersect(const PolygonSet& o) { impl_->set.intersection(o.impl
 void PolygonSet::Difference(const PolygonSet& o) { impl_->set.difference(o.impl_->set); }
 
 PolygonSet PolygonSet::JoinAll(const std::vector<PolygonSet>& sets) {
+  std::vector<const PolygonSet*> p;
+  p.reserve(sets.size());
+  for (const auto& s : sets) p.push_back(&s);
+  return JoinAll(p);
+}
+
+PolygonSet PolygonSet::JoinAll(const std::vector<const PolygonSet*>& sets) {
   // Pairwise joins in a balanced tree: each is an overlay of two arrangements.  (Re-inserting the sets'
   // polygons with holes into one aggregated join crashes inside CGAL 5.5 when a boundary touches itself at a
-  // vertex, which the sets' own output may do.)
-  std::vector<CPolygonSet> level;
-  for (const auto& s : sets)
-    if (!s.impl_->set.is_empty()) level.push_back(s.impl_->set);
-  PolygonSet out;
-  if (level.empty()) return out;
+  // vertex, which the sets' own output may do.)  CGAL's sets have no move constructor (a "move" copies the
+  // arrangement), so the tree holds PolygonSets, whose moves pass a pointer: the inputs are copied once, as
+  // the left operand of each first-level pair, and nothing after.
+  std::vector<const PolygonSet*> in;
+  for (const PolygonSet* s : sets)
+    if (s && !s->impl_->set.is_empty()) in.push_back(s);
+  if (in.empty()) return PolygonSet();
+  std::vector<PolygonSet> level;
+  level.reserve((in.size() + 1) / 2);
+  for (size_t i = 0; i + 1 < in.size(); i += 2) {
+    level.push_back(*in[i]);
+    level.back().impl_->set.join(in[i + 1]->impl_->set);
+  }
+  if (in.size() % 2) level.push_back(*in.back());
   while (level.size() > 1) {
-    std::vector<CPolygonSet> next;
+    std::vector<PolygonSet> next;
+    next.reserve((level.size() + 1) / 2);
     for (size_t i = 0; i + 1 < level.size(); i += 2) {
       next.push_back(std::move(level[i]));
-      next.back().join(level[i + 1]);
+      next.back().impl_->set.join(level[i + 1].impl_->set);
     }
     if (level.size() % 2) next.push_back(std::move(level.back()));
     level = std::move(next);
   }
-  out.impl_->set = std::move(level[0]);
-  return out;
+  return std::move(level[0]);
 }
 
 PolygonSet PolygonSet::Holes() const {

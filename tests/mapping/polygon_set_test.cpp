@@ -40,6 +40,19 @@ TEST(PolygonSet, JoinAllMatchesSequentialJoins) {
   EXPECT_NEAR(PolygonSet::JoinAll(sets).Area(), seq.Area(), 1e-9);
 }
 
+TEST(PolygonSet, JoinAllOfPointersSkipsNullAndEmptyAndLeavesTheInputsAlone) {
+  std::vector<PolygonSet> sets;
+  for (int i = 0; i < 7; ++i) sets.push_back(PolygonSet::FromRing(testing::Rect(i * 2.0, 0, i * 2.0 + 3, 1)));
+  const PolygonSet empty;
+  std::vector<const PolygonSet*> ptrs{nullptr, &empty};
+  for (const auto& s : sets) ptrs.push_back(&s);
+  const PolygonSet all = PolygonSet::JoinAll(ptrs);
+  EXPECT_NEAR(all.Area(), 15.0, 1e-9);  // [0, 15] x [0, 1]
+  EXPECT_NEAR(PolygonSet::JoinAll(sets).Area(), 15.0, 1e-9);
+  for (const auto& s : sets) EXPECT_NEAR(s.Area(), 3.0, 1e-9);  // joined into copies, not into the inputs
+  EXPECT_TRUE(PolygonSet::JoinAll(std::vector<const PolygonSet*>{nullptr, &empty}).empty());
+}
+
 TEST(PolygonSet, HolesAreTheEnclosedRegionsOnly) {
   // A ring with two holes (one of them holding an island) beside an open notch that is not enclosed.
   PolygonSet a = PolygonSet::FromRing(testing::Rect(0, 0, 20, 10));
