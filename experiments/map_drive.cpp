@@ -69,7 +69,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
     r.steps = step + 1;
   }
   if (o.mcmc_every > 0) mapper.SampleMostLikelyMap(rng);
-  r.view = mapper.View();
+  r.view = mapper.ExactView();  // (the per-step views let vertices drift a little before known space follows)
   r.log_posterior = mapper.LogPosterior();
   r.known_space_iou = KnownSpaceIoU(world, r.view);
   const auto truth = core::MapVertices(world);

@@ -121,6 +121,10 @@ class Mapper {
   // The map of the last MCMC call (or the live one without defer_to_mcmc) with its known space and frontiers
   // (computed incrementally and cached).
   MapView View() const;
+  // The same map with its known space rebuilt exactly from the vertices' current positions (View lets a
+  // vertex drift up to options.star_rebuild_tolerance before rebuilding around it, and the union of star
+  // polygons built from older positions reaches into obstacles).  Slower: for scoring a final map.
+  MapView ExactView() const;
 
   // All potential vertices and their inclusion flags (for tests and pictures).
   std::vector<MapVertex> PotentialVertices() const;

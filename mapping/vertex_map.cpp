@@ -542,12 +542,12 @@ struct Mapper::Impl {
   }
 
   // Rebuilds star polygons whose vertices moved more than the tolerance.
-  void RefreshStars() {
+  void RefreshStars(double tolerance) {
     for (size_t i = 0; i < obs.size(); ++i) {
       const Obs& ob = obs[i];
       bool moved = false;
       for (size_t k = 0; k < ob.vid.size() && !moved; ++k)
-        moved = core::Distance(Pos(ob.vid[k]), ob.star_src[k]) > o.star_rebuild_tolerance;
+        moved = core::Distance(Pos(ob.vid[k]), ob.star_src[k]) > tolerance;
       if (moved) RefreshStar(i);
     }
   }
@@ -698,7 +698,7 @@ struct Mapper::Impl {
   }
 
   double Sample(core::Rng& rng) {
-    RefreshStars();
+    RefreshStars(o.star_rebuild_tolerance);
     // Positions and star polygons stay put until the call returns: cache which vertices each star holds.
     struct CacheOff {
       bool& on;
@@ -771,13 +771,16 @@ struct Mapper::Impl {
 
   // ------------------------------------------------------------ known space and frontiers
 
+  // The map view, its known space rebuilt around vertices that drifted farther than 'tolerance'.
+  MapView MakeView(double tolerance) const;
+
   // Known space, incrementally (paper Eq. 2, S_c = union of s(z_i) & s(z_h,i)).  An observation's S_c is
   // recomputed only when what its hypothetical observation is built from changes: vertices or walls entering
   // or leaving the map (at MCMC calls), a vertex becoming a seen candidate (known_space_candidates), or one
-  // of these drifting farther than star_rebuild_tolerance by Kalman updates.  An S_c that grew (or is new)
-  // is joined into the union directly; one that shrank forces the union to be rebuilt from the cached
-  // per-block unions.
-  void UpdateKnownSpace() const {
+  // of these drifting farther than 'tolerance' (star_rebuild_tolerance; 0 for an exact view) by Kalman
+  // updates.  An S_c that grew (or is new) is joined into the union directly; one that shrank forces the
+  // union to be rebuilt from the cached per-block unions.
+  void UpdateKnownSpace(double tolerance) const {
     const MapState& ms = ViewMap();
     const std::vector<std::pair<int, int>> closing = ClosingWalls(ms);
     std::vector<std::pair<int, int>> mw = ms.walls;  // what sight lines stop at
@@ -795,7 +798,7 @@ struct Mapper::Impl {
     snap_member.resize(v.size(), 0);
     drift_ref.resize(v.size(), Vec2{std::numeric_limits<double>::quiet_NaN(), 0});
     for (size_t i = 0; i < v.size(); ++i) {
-      const bool drifted = std::isnan(drift_ref[i].x) || core::Distance(drift_ref[i], Pos(int(i))) > o.star_rebuild_tolerance;
+      const bool drifted = std::isnan(drift_ref[i].x) || core::Distance(drift_ref[i], Pos(int(i))) > tolerance;
       if (drifted) drift_ref[i] = Pos(int(i));
       const bool mapped = ms.mapped[i];
       const bool member = mapped || (with_candidates && v[i].n >= o.min_detections);
@@ -1027,10 +1030,13 @@ MapperStats Mapper::Stats() const {
   return s;
 }
 
-MapView Mapper::View() const {
-  Impl& m = *impl_;
-  const_cast<Impl&>(m).RefreshStars();
-  m.UpdateKnownSpace();
+MapView Mapper::View() const { return impl_->MakeView(impl_->o.star_rebuild_tolerance); }
+MapView Mapper::ExactView() const { return impl_->MakeView(0.0); }
+
+MapView Mapper::Impl::MakeView(double tolerance) const {
+  const Impl& m = *this;
+  const_cast<Impl&>(m).RefreshStars(tolerance);
+  m.UpdateKnownSpace(tolerance);
   MapView view;
   const Impl::MapState& ms = m.ViewMap();
   for (size_t i = 0; i < m.v.size(); ++i) {

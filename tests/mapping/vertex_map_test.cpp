@@ -470,6 +470,39 @@ TEST(Mapper, KnownSpaceIsTheSameComputedStepByStepOrAtTheEnd) {
   EXPECT_NEAR(RoomWithALateVertexKnownArea(true), at_end, 1e-6 * at_end);
 }
 
+// The square room; the first 10 observations see every corner 0.6 further out on both axes, the last 20 see
+// them exactly, so the corners drift back by less than star_rebuild_tolerance (1.0) after MCMC maps them.
+struct DriftingRoom {
+  Mapper m{SquareOptions()};
+  explicit DriftingRoom(bool every_step) {
+    core::Rng rng(3);
+    for (int i = 0; i < 30; ++i) {
+      const core::Pose2 pose{5, 5, 0.1 * i};
+      const double out = i < 10 ? 0.6 : 0.0;
+      std::vector<Detection> d;
+      for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}})
+        d.push_back(Det(pose, c + Vec2{c.x > 5 ? out : -out, c.y > 5 ? out : -out}, core::VertexLabel::kCorner));
+      m.AddObservation(Obs(pose, d));
+      if (i % 5 == 4) m.SampleMostLikelyMap(rng);
+      if (every_step) m.View();
+    }
+    m.SampleMostLikelyMap(rng);
+  }
+};
+
+TEST(Mapper, ExactViewRebuildsKnownSpaceAroundVerticesThatDriftedLessThanTheTolerance) {
+  DriftingRoom stepwise(true), at_end(false);
+  const double cached = stepwise.m.View().known_area();
+  const double exact = stepwise.m.ExactView().known_area();
+  const double fresh = at_end.m.View().known_area();  // every star polygon built from the final positions
+  ASSERT_EQ(stepwise.m.View().vertices.size(), 4u);
+  EXPECT_GT(cached, exact + 5.0) << "the step-by-step view keeps star polygons built from the outer positions";
+  EXPECT_NEAR(exact, fresh, 1e-6 * fresh);
+  EXPECT_LT(exact, 10.6 * 10.6) << "the corners ended within 0.3 of the room's";
+  EXPECT_NEAR(stepwise.m.View().known_area(), exact, 1e-6 * exact) << "the cache follows the exact view";
+  EXPECT_NEAR(at_end.m.ExactView().known_area(), fresh, 1e-6 * fresh) << "nothing to rebuild: the same";
+}
+
 TEST(SolveAssignment, FindsTheMinimumCostOneToOneAssignment) {
   const std::vector<std::vector<double>> cost{{4, 1, 3}, {2, 0, 5}, {3, 2, 2}};
   const auto col = SolveAssignment(cost);
