@@ -64,6 +64,21 @@ void ReadGuidedMaze(YamlSection s, sim::GuidedMazeOptions* o) {
 
 }  // namespace
 
+void SearchOptions::Validate() const {
+  auto fail = [](const char* key, double v, const char* why) {
+    throw core::ConfigError("<options>", key, std::to_string(v), why);
+  };
+  if (stuck_steps < 1) fail("search.stuck_steps", stuck_steps, "must be >= 1");
+  if (!(success_iou >= 0 && success_iou <= 1)) fail("search.success_iou", success_iou, "must be in [0, 1]");
+  if (!(switch_ratio >= 1)) fail("search.switch_ratio", switch_ratio, "must be >= 1");
+  if (!(switch_margin >= 0)) fail("search.switch_margin", switch_margin, "must be >= 0");
+  if (!(give_up_distance > 0)) fail("search.give_up_distance", give_up_distance, "must be > 0");
+  if (give_up_steps < 1) fail("search.give_up_steps", give_up_steps, "must be >= 1");
+  if (!(push_distance >= 0)) fail("search.push_distance", push_distance, "must be >= 0");
+  if (!(give_up_reach >= 0)) fail("search.give_up_reach", give_up_reach, "must be >= 0");
+  if (!(give_up_probe_radius >= 0)) fail("search.give_up_probe_radius", give_up_probe_radius, "must be >= 0");
+}
+
 void Validate(const Config& c) {
   try {
     c.worlds.Validate();
@@ -71,7 +86,7 @@ void Validate(const Config& c) {
     throw core::ConfigError(c.source, "worlds." + e.key(), e.value(), e.problem());
   }
   for (auto validate : {+[](const Config& x) { x.sensor.Validate(); }, +[](const Config& x) { x.mapping.Validate(); },
-                        +[](const Config& x) { x.planning.Validate(); }}) {
+                        +[](const Config& x) { x.planning.Validate(); }, +[](const Config& x) { x.search.Validate(); }}) {
     try {
       validate(c);
     } catch (const core::ConfigError& e) {
@@ -192,6 +207,21 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     pl.Read("frontier_min_length", &c.planning.frontier_min_length, 0.0, 1000.0);
     pl.Read("frontier_setback", &c.planning.frontier_setback, 0.01, 100.0);
     pl.Finish();
+  }
+  {
+    YamlSection r = top.Section("search");
+    SearchOptions& o = c.search;
+    r.Read("stuck_steps", &o.stuck_steps, 1, 1000);
+    r.Read("success_iou", &o.success_iou, 0.0, 1.0);
+    r.Read("switch_ratio", &o.switch_ratio, 1.0, 100.0);
+    r.Read("switch_margin", &o.switch_margin, 0.0, 10000.0);
+    r.Read("give_up_distance", &o.give_up_distance, 0.01, 1000.0);
+    r.Read("give_up_steps", &o.give_up_steps, 1, 100000);
+    r.Read("push_distance", &o.push_distance, 0.0, 1000.0);
+    r.Read("count_standing_only", &o.count_standing_only);
+    r.Read("give_up_reach", &o.give_up_reach, 0.0, 1000.0);
+    r.Read("give_up_probe_radius", &o.give_up_probe_radius, 0.0, 100000.0);
+    r.Finish();
   }
   {
     YamlSection b = top.Section("bench");

@@ -41,6 +41,26 @@ struct BenchOptions {
   bool videos = false;           // an MP4 of every trial (videos/<row>_s<seed>.mp4; slow: one frame a step)
 };
 
+// How agents search in a trial (the trial loop's policy): YAML section `search:`.
+struct SearchOptions {
+  int stuck_steps = 6;            // an agent that moved less than a tenth of a step this many steps is nudged
+  double success_iou = 0.95;      // success: explored and IoU above this (the paper's criterion)
+  double switch_ratio = 1.5;      // an agent keeps its frontier unless a new one is cheaper than cost/ratio ...
+  double switch_margin = 10.0;    // ... and by more than this
+  double give_up_distance = 4.0;  // an agent this close to its frontier target ...
+  int give_up_steps = 20;         // ... for this many steps without the frontier going away gives it up
+                                  // (after half of them its target is pushed push_distance into unknown
+                                  // space); a step in which an agent heading for it is stuck counts as well
+  double push_distance = 6.0;
+  bool count_standing_only = true;  // only an agent that stands next to a frontier counts toward giving it up
+  double give_up_reach = 3.0;     // a new frontier lying this close to a given-up one (middle and ends) is
+                                  // given up (the map re-creates the same unmapped wall piece under a new
+                                  // id); 0: off
+  double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
+                                       // stood (0: all of it)
+  void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
+};
+
 struct PictureOptions {
   double pixels_per_unit = 3.0;  // scale of top-down pictures
   int max_pixels = 2400;         // the longer image side is capped at this
@@ -54,6 +74,7 @@ struct Config {
   sim::NoisySensorOptions sensor;
   mapping::MapperOptions mapping;
   planning::PlannerOptions planning;
+  SearchOptions search;
   PictureOptions picture;
   DemoJob demo;
   BenchOptions bench;

@@ -315,7 +315,6 @@ int RunTrialCommand(const TrialArgs& a) {
   EnsureDir(a.out);
   mapping::MapView view;
   experiments::TrialOptions t = a.trial;
-  t.planner = cfg.planning;
   std::unique_ptr<experiments::TrialVideo> video;
   if (!a.video.empty()) {
     video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);

@@ -102,12 +102,13 @@ std::vector<int> GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& 
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,
                            mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();
+  const SearchOptions& so = config.search;
   TOPONAV_CHECK(o.num_agents >= 1, "num_agents " << o.num_agents);
-  TOPONAV_CHECK(o.stuck_steps >= 1, "stuck_steps " << o.stuck_steps);
+  so.Validate();
   mapping::MapperOptions mo = config.mapping;
   mo.world_bounds = world.bounds;
   // Split frontiers no shorter than the planner keeps (a split must not make an opening vanish).
-  mo.frontier_split_min_length = std::max(mo.frontier_split_min_length, o.planner.frontier_min_length);
+  mo.frontier_split_min_length = std::max(mo.frontier_split_min_length, config.planning.frontier_min_length);
   if (!world.has_boundary()) mo.open_region = world.bounds;  // open world: its bounds are the search region
   mapping::Mapper mapper(mo);
   auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(seed, 1));
@@ -131,7 +132,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   // Frontiers an agent reached without them going away (a wall the map has not accepted yet, a sliver) are
   // given up after a while, so they cannot hold a trial forever.  (Frontiers recede as an agent approaches,
   // so "no progress" alone is not a reason: dwelling next to the target is, and so is being stuck on the way.)
-  GivenUpFrontiers given_up(o.give_up_reach, o.give_up_probe_radius);
+  GivenUpFrontiers given_up(so.give_up_reach, so.give_up_probe_radius);
   std::map<int, int> near_steps;
   std::vector<int> committed(size_t(o.num_agents), -1);
   for (int step = 0; step < o.max_steps; ++step) {
@@ -148,7 +149,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     r.time_mcmc_s += seconds(tk1, tk2);
     r.time_known_s += seconds(tk2, tk3);
     // Frontiers outside the search region (the office park's bounds) do not count.
-    planning::PlannerOptions po = o.planner;
+    planning::PlannerOptions po = config.planning;
     po.clearance = std::min(std::max(po.clearance, config.motion.agent_radius + 0.25), 0.9 * po.inflation_radius);
     std::vector<planning::FrontierTarget> targets, original;
     for (int id : given_up.Update(view.frontiers)) near_steps[id] = 0;  // the same place under a new id; grown ones back
@@ -159,8 +160,8 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     // lies beyond yet) is pushed through: its target moves into the unknown space behind it, so an agent
     // walks in and looks from there (the optimistic planner counts unknown space as free).
     for (auto& t : targets) {
-      if (near_steps[t.frontier_id] <= o.give_up_steps / 2) continue;
-      const Vec2 pushed = t.point + t.outward * (po.frontier_setback + o.push_distance);
+      if (near_steps[t.frontier_id] <= so.give_up_steps / 2) continue;
+      const Vec2 pushed = t.point + t.outward * (po.frontier_setback + so.push_distance);
       if (!open_world || world.bounds.Contains(pushed)) t.point = pushed;  // never out of the search region
     }
     // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out
@@ -180,7 +181,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       for (const auto& t : targets) {
         if (t.frontier_id != prev) continue;
         const planning::Path keep = graph.Plan(agents[size_t(a)], t.point);
-        if (keep && keep.cost <= o.switch_ratio * c.path.cost + o.switch_margin) {
+        if (keep && keep.cost <= so.switch_ratio * c.path.cost + so.switch_margin) {
           bool taken = false;  // a team member may have been given it meanwhile
           for (int b = 0; b < o.num_agents; ++b) taken = taken || (b != a && choices[size_t(b)].frontier_id == prev);
           if (!taken) {
@@ -203,7 +204,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     // Frontiers none of the agents can reach for a while: no reachable frontier is left, which is the
     // paper's definition of explored (a map error that walls one off shows in the IoU instead).
     unreachable = any || targets.empty() ? 0 : unreachable + 1;
-    if (unreachable > 4 * o.stuck_steps) {
+    if (unreachable > 4 * so.stuck_steps) {
       r.end_reason = "unreachable";
       r.explored = true;
       break;
@@ -215,17 +216,17 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     std::vector<char> standing(size_t(o.num_agents), 1);
     for (int a = 0; a < o.num_agents; ++a) {
       const auto& trail = r.paths[size_t(a)];
-      if (o.count_standing_only && trail.size() >= 2)
+      if (so.count_standing_only && trail.size() >= 2)
         standing[size_t(a)] = core::Distance(trail[trail.size() - 2], trail.back()) < 0.5 * step_length;
     }
     for (size_t i = 0; i < targets.size(); ++i) {
       bool near = false;
       for (int a = 0; a < o.num_agents; ++a) {
         const Vec2& p = agents[size_t(a)];
-        near = near || (standing[size_t(a)] && (core::Distance(p, targets[i].point) < o.give_up_distance ||
-                                                core::Distance(p, original[i].point) < o.give_up_distance));
+        near = near || (standing[size_t(a)] && (core::Distance(p, targets[i].point) < so.give_up_distance ||
+                                                core::Distance(p, original[i].point) < so.give_up_distance));
       }
-      if (near && ++near_steps[targets[i].frontier_id] > o.give_up_steps)
+      if (near && ++near_steps[targets[i].frontier_id] > so.give_up_steps)
         given_up.GiveUp(targets[i].frontier_id, view.frontiers, &original[i].point);
     }
     int stuck = 0;
@@ -239,15 +240,15 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       const bool no_way = c.status == planning::PlanStatus::kNoPath && !targets.empty();
       // ... or a path but no headway over the last few steps (pacing back and forth in front of something).
       const auto& trail = r.paths[size_t(a)];
-      const size_t window = size_t(2 * o.stuck_steps);
+      const size_t window = size_t(2 * so.stuck_steps);
       const bool pacing = !path.empty() && trail.size() > window &&
                           core::Distance(trail[trail.size() - window], s.pose.position()) < step_length;
       if ((!path.empty() && s.distance < 0.1 * step_length) || no_way || pacing) {
         // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward
         // giving it up as if it stood next to it (both, if it is stuck next to it).
-        if (c.status == planning::PlanStatus::kFound && ++near_steps[c.frontier_id] > o.give_up_steps)
+        if (c.status == planning::PlanStatus::kFound && ++near_steps[c.frontier_id] > so.give_up_steps)
           given_up.GiveUp(c.frontier_id, view.frontiers);
-        if (++still[size_t(a)] >= o.stuck_steps) {
+        if (++still[size_t(a)] >= so.stuck_steps) {
           // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
           const double ang = rng.Uniform(-core::kPi, core::kPi);
           s = motion.Nudge(a, Vec2{std::cos(ang), std::sin(ang)} * step_length);
@@ -268,7 +269,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   view = mapper.ExactView();  // (the planners' views let vertices drift a little before known space follows)
   if (o.on_step) o.on_step(view, r.paths);  // the final map, the one the metrics score
   r.iou = open_world ? BuildingPlacementIoU(world, view) : KnownSpaceIoU(world, view);
-  r.success = r.explored && r.iou > o.success_iou;
+  r.success = r.explored && r.iou > so.success_iou;
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (final_view) *final_view = view;
   return r;

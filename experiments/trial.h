@@ -15,25 +15,11 @@
 
 namespace toponav::experiments {
 
+// One trial's run; how agents search and plan comes from the config (config.search, config.planning).
 struct TrialOptions {
   int num_agents = 1;
   int max_steps = 400;          // step cap (the reference's 400 iterations)
   int mcmc_every = 5;           // MCMC cadence in steps
-  int stuck_steps = 6;          // an agent that moved less than a tenth of a step this many steps is nudged
-  double success_iou = 0.95;    // success: explored and IoU above this (the paper's criterion)
-  double switch_ratio = 1.5;    // an agent keeps its frontier unless a new one is cheaper than cost/ratio ...
-  double switch_margin = 10.0;  // ... and by more than this
-  double give_up_distance = 4.0;  // an agent this close to its frontier target ...
-  int give_up_steps = 20;       // ... for this many steps without the frontier going away gives it up
-                                // (after half of them its target is pushed push_distance into unknown space);
-                                // a step in which an agent heading for it is stuck counts as well
-  double push_distance = 6.0;
-  bool count_standing_only = true;  // only an agent that stands next to a frontier counts toward giving it up
-  double give_up_reach = 3.0;   // a new frontier lying this close to a given-up one (middle and ends) is given up
-                                // (the map re-creates the same unmapped wall piece under a new id); 0: off
-  double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
-                                       // stood (0: all of it)
-  planning::PlannerOptions planner;
   // Called after every step with the map the planners used and the agents' paths so far, and once more
   // with the final map the metrics score (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;

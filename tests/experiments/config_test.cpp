@@ -35,6 +35,30 @@ TEST(Config, ValuesAreRead) {
   EXPECT_EQ(c.demo.seed, 12345u);
 }
 
+TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
+  const Config c = ParseConfig("search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  count_standing_only: false\n", "x.yaml");
+  EXPECT_EQ(c.search.give_up_steps, 12);
+  EXPECT_DOUBLE_EQ(c.search.switch_ratio, 2.0);
+  EXPECT_FALSE(c.search.count_standing_only);
+  EXPECT_DOUBLE_EQ(c.search.push_distance, SearchOptions{}.push_distance) << "unset keys keep their defaults";
+  const auto e = ErrorOf("search:\n  switch_ratio: 0.5\n");
+  EXPECT_EQ(e.file(), "configs/bad.yaml");
+  EXPECT_EQ(e.key(), "search.switch_ratio");
+  EXPECT_EQ(e.value(), "0.5");
+  EXPECT_EQ(ErrorOf("search:\n  give_up_step: 12\n").key(), "search.give_up_step");
+  // Built in code, not read: the same rules, named by key.
+  Config bad;
+  bad.source = "in-code";
+  bad.search.give_up_steps = 0;
+  try {
+    Validate(bad);
+    ADD_FAILURE() << "no error";
+  } catch (const core::ConfigError& x) {
+    EXPECT_EQ(x.key(), "search.give_up_steps");
+    EXPECT_EQ(x.file(), "in-code");
+  }
+}
+
 TEST(Config, UnknownKeyNamesFileAndKeyPath) {
   const auto e = ErrorOf("worlds:\n  labyrinth:\n    num_romos: 5\n");
   EXPECT_EQ(e.file(), "configs/bad.yaml");
