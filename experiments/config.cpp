@@ -206,6 +206,8 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     pl.Read("clearance", &c.planning.clearance, 0.0, 100.0);
     pl.Read("frontier_min_length", &c.planning.frontier_min_length, 0.0, 1000.0);
     pl.Read("frontier_setback", &c.planning.frontier_setback, 0.01, 100.0);
+    pl.Read("frontier_row_gap", &c.planning.frontier_row_gap, 0.0, 1000.0);
+    pl.Read("frontier_row_tolerance", &c.planning.frontier_row_tolerance, 0.01, 100.0);
     pl.Finish();
   }
   {

@@ -19,6 +19,8 @@ void PlannerOptions::Validate() const {
   if (!(clearance >= 0 && clearance < inflation_radius)) fail("planning.clearance", clearance, "must be in [0, inflation_radius)");
   if (!(frontier_min_length >= 0)) fail("planning.frontier_min_length", frontier_min_length, "must be >= 0");
   if (!(frontier_setback > 0)) fail("planning.frontier_setback", frontier_setback, "must be > 0");
+  if (!(frontier_row_gap >= 0)) fail("planning.frontier_row_gap", frontier_row_gap, "must be >= 0");
+  if (!(frontier_row_tolerance > 0)) fail("planning.frontier_row_tolerance", frontier_row_tolerance, "must be > 0");
 }
 
 namespace {
@@ -208,10 +210,31 @@ std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vect
 
 Path VisibilityGraph::Plan(const Vec2& start, const Vec2& goal) const { return PlanToMany(start, {goal})[0]; }
 
+bool AlongVertexRow(const mapping::Frontier& f, const mapping::MapView& view, const PlannerOptions& options) {
+  const double tol = options.frontier_row_tolerance;
+  if (options.frontier_row_gap <= 0 || f.points.size() < 2) return false;
+  const Vec2 a = f.points.front(), b = f.points.back();
+  const double length = core::Distance(a, b);
+  if (length < 1e-9) return false;
+  for (const auto& p : f.points)
+    if (core::DistanceToSegment(p, {a, b}) > tol) return false;  // bent: not a straight wall
+  // Where the detected vertices next to the chord lie along it, with both ends counted.
+  const Vec2 u = (b - a) / length;
+  std::vector<double> along{0.0, length};
+  for (const auto* list : {&view.vertices, &view.rejected})
+    for (const auto& v : *list)
+      if (core::DistanceToSegment(v.position, {a, b}) <= tol) along.push_back(core::Dot(v.position - a, u));
+  std::sort(along.begin(), along.end());
+  for (size_t i = 1; i < along.size(); ++i)
+    if (along[i] - along[i - 1] > options.frontier_row_gap) return false;
+  return true;
+}
+
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options) {
   std::vector<FrontierTarget> out;
   for (const auto& f : view.frontiers) {
     if (f.length < options.frontier_min_length || f.points.size() < 2) continue;
+    if (AlongVertexRow(f, view, options)) continue;
     // The frontier segment under the midpoint, and the side of it that is known space.
     double best = std::numeric_limits<double>::infinity();
     Vec2 dir{1, 0};

@@ -15,6 +15,14 @@ struct PlannerOptions {
   double clearance = 1.5;          // graph edges keep at least this distance from map walls
   double frontier_min_length = 8.0;  // shorter frontiers (slivers along walls) are ignored
   double frontier_setback = 2.0;   // a frontier target is this far inside known space from its midpoint
+  // A straight frontier (within frontier_row_tolerance of its chord) with no stretch longer than
+  // frontier_row_gap between detected vertices along it (map vertices and seen candidates; its two ends
+  // count as such) is taken for a wall the map has not accepted yet and gets no target: a wall longer than
+  // the sensor's range lined with candidates, a short chord between two vertices of one wall.  So a straight
+  // frontier shorter than the gap never gets a target.  The gap is kept below the narrowest opening agents
+  // must pass (labyrinth corridors are 20 wide).  0: off.
+  double frontier_row_gap = 14.0;
+  double frontier_row_tolerance = 1.0;
   void Validate() const;           // throws core::ConfigError ("planning.inflation_radius", ...)
 };
 
@@ -66,6 +74,9 @@ struct FrontierTarget {
   core::Vec2 outward{1, 0};  // unit normal of the frontier at its midpoint, pointing into unknown space
 };
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options);
+// True if 'frontier' is straight with no stretch longer than PlannerOptions::frontier_row_gap between detected
+// vertices along it (a wall the map has not accepted yet).
+bool AlongVertexRow(const mapping::Frontier& frontier, const mapping::MapView& view, const PlannerOptions& options);
 
 // One agent's choice: the frontier it heads for and the path there.
 struct FrontierChoice {

@@ -79,11 +79,11 @@ TEST(VisibilityGraph, ExplorationStaysInKnownSpace) {
   for (const auto& p : known.points) EXPECT_TRUE(core::Contains(L, p));
 }
 
-// A room [0,20]^2 with three openings (frontiers) on three sides.
+// A room [0,20]^2 with three openings (frontiers, 16 wide) on three sides.
 mapping::MapView ThreeDoorRoom() {
   auto view = View({}, {}, {testing::Rect(0, 0, 20, 20)});
-  view.frontiers = {{1, {{20, 5}, {20, 15}}, {20, 10}, 10.0}, {2, {{5, 20}, {15, 20}}, {10, 20}, 10.0},
-                    {3, {{0, 15}, {0, 5}}, {0, 10}, 10.0}};
+  view.frontiers = {{1, {{20, 2}, {20, 18}}, {20, 10}, 16.0}, {2, {{2, 20}, {18, 20}}, {10, 20}, 16.0},
+                    {3, {{0, 18}, {0, 2}}, {0, 10}, 16.0}};
   return view;
 }
 
@@ -93,13 +93,51 @@ TEST(Frontiers, TargetsLieInsideKnownSpace) {
   ASSERT_EQ(targets.size(), 3u);
   for (const auto& t : targets) EXPECT_TRUE(core::Contains(view.known_space[0], t.point));
   PlannerOptions strict;
-  strict.frontier_min_length = 12.0;
+  strict.frontier_min_length = 17.0;
   EXPECT_TRUE(FrontierTargets(view, strict).empty());
   PlannerOptions deep;
   deep.frontier_setback = 30.0;  // deeper than the room: the midpoint itself
   const auto mids = FrontierTargets(view, deep);
   ASSERT_EQ(mids.size(), 3u);
   EXPECT_NEAR(mids[0].point.x, 20.0, 1e-12);
+}
+
+// A room [0,40]x[0,20] whose top side y = 20 is a frontier: the map has not accepted the wall there.
+mapping::MapView RoomWithAnOpenTop(const std::vector<double>& candidates_at_x) {
+  auto view = View({{0, 20}, {40, 20}}, {}, {testing::Rect(0, 0, 40, 20)});
+  for (size_t i = 0; i < candidates_at_x.size(); ++i)
+    view.rejected.push_back({int(10 + i), {candidates_at_x[i], 20.3}, {}, 3});  // seen, left out by the posterior
+  view.frontiers = {{1, {{0, 20}, {40, 20}}, {20, 20}, 40.0}};
+  return view;
+}
+
+TEST(Frontiers, AStraightFrontierAlongCloseDetectedVerticesIsAWall) {
+  const PlannerOptions o;  // gaps up to 14, within 1 of the chord
+  EXPECT_TRUE(FrontierTargets(RoomWithAnOpenTop({6, 13, 20, 27, 34}), o).empty()) << "candidates every 7 units";
+  EXPECT_TRUE(AlongVertexRow(RoomWithAnOpenTop({12, 26}).frontiers[0], RoomWithAnOpenTop({12, 26}), o));
+  // A gap wider than that in the row: an opening.
+  EXPECT_EQ(FrontierTargets(RoomWithAnOpenTop({6, 13}), o).size(), 1u) << "13 .. 40 is 27 units";
+  EXPECT_EQ(FrontierTargets(RoomWithAnOpenTop({}), o).size(), 1u);
+  // Between two corners: a chord narrower than the gap is a wall, a corridor-wide one (here 16) an opening.
+  auto chord = [](double width) {
+    auto v = View({{0, 20}, {width, 20}}, {}, {testing::Rect(0, 0, width, 20)});
+    v.frontiers = {{1, {{0, 20}, {width, 20}}, {width / 2, 20}, width}};
+    return v;
+  };
+  EXPECT_TRUE(FrontierTargets(chord(12), o).empty());
+  EXPECT_EQ(FrontierTargets(chord(16), o).size(), 1u);
+  // Candidates off the line (behind the opening) do not count.
+  auto behind = RoomWithAnOpenTop({});
+  for (double x : {6.0, 13.0, 20.0, 27.0, 34.0}) behind.rejected.push_back({99, {x, 25.0}, {}, 3});
+  EXPECT_EQ(FrontierTargets(behind, o).size(), 1u);
+  // A bent frontier is no straight wall.
+  auto bent = RoomWithAnOpenTop({6, 13, 20, 27, 34});
+  bent.frontiers[0].points = {{0, 20}, {20, 24}, {40, 20}};
+  EXPECT_EQ(FrontierTargets(bent, o).size(), 1u);
+  PlannerOptions off;
+  off.frontier_row_gap = 0;
+  EXPECT_EQ(FrontierTargets(RoomWithAnOpenTop({6, 13, 20, 27, 34}), off).size(), 1u);
+  EXPECT_EQ(FrontierTargets(chord(12), off).size(), 1u);
 }
 
 TEST(Frontiers, SingleAgentGoesToTheNearest) {
