@@ -772,7 +772,7 @@ struct Mapper::Impl {
   // ------------------------------------------------------------ known space and frontiers
 
   // The map view, its known space rebuilt around vertices that drifted farther than 'tolerance'.
-  MapView MakeView(double tolerance) const;
+  MapView MakeView(double tolerance);
 
   // Known space, incrementally (paper Eq. 2, S_c = union of s(z_i) & s(z_h,i)).  An observation's S_c is
   // recomputed only when what its hypothetical observation is built from changes: vertices or walls entering
@@ -1033,9 +1033,9 @@ MapperStats Mapper::Stats() const {
 MapView Mapper::View() const { return impl_->MakeView(impl_->o.star_rebuild_tolerance); }
 MapView Mapper::ExactView() const { return impl_->MakeView(0.0); }
 
-MapView Mapper::Impl::MakeView(double tolerance) const {
-  const Impl& m = *this;
-  const_cast<Impl&>(m).RefreshStars(tolerance);
+MapView Mapper::Impl::MakeView(double tolerance) {
+  Impl& m = *this;
+  m.RefreshStars(tolerance);
   m.UpdateKnownSpace(tolerance);
   MapView view;
   const Impl::MapState& ms = m.ViewMap();
