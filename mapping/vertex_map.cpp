@@ -380,7 +380,8 @@ struct Mapper::Impl {
   // beyond the reference, a detection lying on the segment between the two (within wall_on_segment_tolerance)
   // damps it only while its vertex is in the map: a false detection on a wall that the map rejects does not
   // hide the wall, while a doorway's jamb on the line does once it is mapped (evidence is conditional on
-  // the map, so MCMC weighs the jamb and the wall across the door together).
+  // the map, so MCMC weighs the jamb and the wall across the door together), and such a pair's evidence
+  // needs both ends to say a wall runs on (wall_past_detection_product).
   void AddWallEvidence(const Obs& ob) {
     const size_t n = ob.det.size();
     const std::vector<Vec2>& at = ob.at;
@@ -412,8 +413,9 @@ struct Mapper::Impl {
           neighbours[size_t(b)].push_back(a);
         }
         w.count += 1;
-        c.value = std::pow(o.wall_skip_damping, double(fixed)) *
-                  (1.0 - 0.5 * (core::NoWallCcw(ob.det[i].labels) + core::NoWallCw(ob.det[j].labels)));
+        const double no_i = core::NoWallCcw(ob.det[i].labels), no_j = core::NoWallCw(ob.det[j].labels);
+        const bool both = !c.on_segment.empty() && o.wall_past_detection_product;  // past a detection: both ends
+        c.value = std::pow(o.wall_skip_damping, double(fixed)) * (both ? (1.0 - no_i) * (1.0 - no_j) : 1.0 - 0.5 * (no_i + no_j));
         if (c.on_segment.empty() || c.value < 1e-9) {
           w.sum += c.value;
           continue;

@@ -159,6 +159,34 @@ TEST(Mapper, MappedDoorwayJambsOnTheWallLineKeepTheDoorwayOpen) {
   EXPECT_EQ(view.frontiers.size(), 1u) << "the doorway";
 }
 
+// The doorway from (4,0) to (6,0) again, but the far jamb's detections scatter along the doorway and the wall
+// beyond it (never twice within the gate of one place, so it never gathers enough detections to be mapped),
+// and the near jamb's label leans only 60 % towards "no wall counter-clockwise" (a jamb seen edge-on).
+MapView DoorwayWithAnUnmappedFarJamb(bool product) {
+  MapperOptions o = SquareOptions();
+  o.wall_past_detection_product = product;
+  return DriveThroughSquare(o, 7, [](int i, const core::Pose2& pose) {
+    std::vector<Detection> d = SquareCorners(pose);
+    Detection near_jamb = Det(pose, {4, 0}, core::VertexLabel::kLeftGap);
+    near_jamb.labels = {0.0, 0.4, 0.6, 0.0};  // P(no wall ccw) = 0.6
+    d.push_back(near_jamb);
+    d.push_back(Det(pose, {6.0 + 0.27 * (i % 15), 0.0}, core::VertexLabel::kRightGap));
+    return d;
+  });
+}
+
+TEST(Mapper, AWallPastAnUnmappedJambNeedsBothEndsToSayWall) {
+  // Averaged, the near jamb (0.4 wall) and the far corner (1.0 wall) make 0.7: a wall across the doorway.
+  const MapView averaged = DoorwayWithAnUnmappedFarJamb(false);
+  EXPECT_TRUE(HasWall(averaged, {4, 0}, {10, 0}));
+  // Both ends must say wall (0.4 x 1.0): the doorway stays open, and the wall up to the near jamb stays.
+  const MapView view = DoorwayWithAnUnmappedFarJamb(true);
+  EXPECT_EQ(view.vertices.size(), 5u);
+  EXPECT_FALSE(HasWall(view, {4, 0}, {10, 0})) << "a wall across the doorway";
+  EXPECT_TRUE(HasWall(view, {0, 0}, {4, 0}));
+  EXPECT_FALSE(view.frontiers.empty()) << "the doorway";
+}
+
 // Detections of the corner (10,10) scattered around it, the first observation with a second (false) one
 // 1.2 units away: how many detections the vertex born from the false one collects.
 int DuplicateDetections(double count_bias) {
