@@ -179,7 +179,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("wall_threshold", &o.wall_threshold, 0.01, 0.99);
     r.Read("wall_skip_damping", &o.wall_skip_damping, 0.0, 1.0);
     r.Read("wall_on_segment_tolerance", &o.wall_on_segment_tolerance, 0.0, 100.0);
-    r.Read("wall_past_detection_product", &o.wall_past_detection_product);
+    r.Read("wall_past_detection_min", &o.wall_past_detection_min);
     r.Read("edge_log_floor", &o.edge_log_floor, -100.0, -1e-6);
     r.Read("mcmc_samples", &o.mcmc_samples, 0, 100000);
     r.Read("mcmc_window", &o.mcmc_window, 1, 1000000);

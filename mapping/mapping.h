@@ -29,13 +29,11 @@ struct MapperOptions {
                                           // between them whose vertex is not in the map (a false detection on
                                           // the wall); 0: count all (the reference)
   // The evidence such a pair (a detection on the segment between them) gives for a wall straight past the
-  // detection: true: both ends must say a wall runs on (the product of their wall likelihoods); false: their
-  // average, as for neighbouring detections.  At a doorway the near jamb says no wall and the corner beyond
-  // the far jamb says wall: their average (1/2) made a wall across the doorway a coin flip whenever the far
-  // jamb was out of the map.  A false detection on a wall has both ends saying wall either way.  Off by
-  // default: on tuning seeds it won labyrinth team searches (298 -> 300 of 300) but single agents finished
-  // fewer searches within 400 steps (208 -> 201 of 219); see the README's map section.
-  bool wall_past_detection_product = false;
+  // detection: true: the smaller of its ends' wall likelihoods (both ends must say a wall runs on); false:
+  // their average, as for neighbouring detections (the reference).  At a doorway the near jamb says no wall
+  // and the corner beyond the far jamb says wall: their average (1/2) made a wall across the doorway a coin
+  // flip whenever the far jamb was out of the map.  A false detection on a wall has both ends saying wall.
+  bool wall_past_detection_min = true;
   double edge_log_floor = -1.386;         // log 0.25: an edge term never costs more than this
   int mcmc_samples = 50;                  // proposals per SampleMostLikelyMap call (the paper's 50)
   int mcmc_window = 45;                   // proposals flip vertices seen in this many latest observations

@@ -381,7 +381,7 @@ struct Mapper::Impl {
   // damps it only while its vertex is in the map: a false detection on a wall that the map rejects does not
   // hide the wall, while a doorway's jamb on the line does once it is mapped (evidence is conditional on
   // the map, so MCMC weighs the jamb and the wall across the door together), and such a pair's evidence
-  // needs both ends to say a wall runs on (wall_past_detection_product).
+  // needs both ends to say a wall runs on (wall_past_detection_min).
   void AddWallEvidence(const Obs& ob) {
     const size_t n = ob.det.size();
     const std::vector<Vec2>& at = ob.at;
@@ -414,8 +414,8 @@ struct Mapper::Impl {
         }
         w.count += 1;
         const double no_i = core::NoWallCcw(ob.det[i].labels), no_j = core::NoWallCw(ob.det[j].labels);
-        const bool both = !c.on_segment.empty() && o.wall_past_detection_product;  // past a detection: both ends
-        c.value = std::pow(o.wall_skip_damping, double(fixed)) * (both ? (1.0 - no_i) * (1.0 - no_j) : 1.0 - 0.5 * (no_i + no_j));
+        const bool both = !c.on_segment.empty() && o.wall_past_detection_min;  // past a detection: both ends
+        c.value = std::pow(o.wall_skip_damping, double(fixed)) * (both ? 1.0 - std::max(no_i, no_j) : 1.0 - 0.5 * (no_i + no_j));
         if (c.on_segment.empty() || c.value < 1e-9) {
           w.sum += c.value;
           continue;

@@ -162,9 +162,9 @@ TEST(Mapper, MappedDoorwayJambsOnTheWallLineKeepTheDoorwayOpen) {
 // The doorway from (4,0) to (6,0) again, but the far jamb's detections scatter along the doorway and the wall
 // beyond it (never twice within the gate of one place, so it never gathers enough detections to be mapped),
 // and the near jamb's label leans only 60 % towards "no wall counter-clockwise" (a jamb seen edge-on).
-MapView DoorwayWithAnUnmappedFarJamb(bool product) {
+MapView DoorwayWithAnUnmappedFarJamb(bool both_ends) {
   MapperOptions o = SquareOptions();
-  o.wall_past_detection_product = product;
+  o.wall_past_detection_min = both_ends;
   return DriveThroughSquare(o, 7, [](int i, const core::Pose2& pose) {
     std::vector<Detection> d = SquareCorners(pose);
     Detection near_jamb = Det(pose, {4, 0}, core::VertexLabel::kLeftGap);
@@ -179,7 +179,7 @@ TEST(Mapper, AWallPastAnUnmappedJambNeedsBothEndsToSayWall) {
   // Averaged, the near jamb (0.4 wall) and the far corner (1.0 wall) make 0.7: a wall across the doorway.
   const MapView averaged = DoorwayWithAnUnmappedFarJamb(false);
   EXPECT_TRUE(HasWall(averaged, {4, 0}, {10, 0}));
-  // Both ends must say wall (0.4 x 1.0): the doorway stays open, and the wall up to the near jamb stays.
+  // Both ends must say wall (the smaller, 0.4): the doorway stays open, and the wall up to the near jamb stays.
   const MapView view = DoorwayWithAnUnmappedFarJamb(true);
   EXPECT_EQ(view.vertices.size(), 5u);
   EXPECT_FALSE(HasWall(view, {4, 0}, {10, 0})) << "a wall across the doorway";
