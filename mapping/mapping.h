@@ -33,6 +33,8 @@ struct MapperOptions {
   // their average, as for neighbouring detections (the reference).  At a doorway the near jamb says no wall
   // and the corner beyond the far jamb says wall: their average (1/2) made a wall across the doorway a coin
   // flip whenever the far jamb was out of the map.  A false detection on a wall has both ends saying wall.
+  // Closed worlds only: the office park's buildings have no doorways, and there the smaller end only delayed
+  // building faces with a false detection on them (one agent, tuning seeds 110-309: +3.8 +- 1.5 steps).
   bool wall_past_detection_min = true;
   double edge_log_floor = -1.386;         // log 0.25: an edge term never costs more than this
   int mcmc_samples = 50;                  // proposals per SampleMostLikelyMap call (the paper's 50)

@@ -414,7 +414,8 @@ struct Mapper::Impl {
         }
         w.count += 1;
         const double no_i = core::NoWallCcw(ob.det[i].labels), no_j = core::NoWallCw(ob.det[j].labels);
-        const bool both = !c.on_segment.empty() && o.wall_past_detection_min;  // past a detection: both ends
+        // Past a detection both ends must say wall (closed worlds: open-world buildings have no doorways).
+        const bool both = !c.on_segment.empty() && o.wall_past_detection_min && !o.open_region;
         c.value = std::pow(o.wall_skip_damping, double(fixed)) * (both ? 1.0 - std::max(no_i, no_j) : 1.0 - 0.5 * (no_i + no_j));
         if (c.on_segment.empty() || c.value < 1e-9) {
           w.sum += c.value;

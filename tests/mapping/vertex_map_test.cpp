@@ -162,9 +162,10 @@ TEST(Mapper, MappedDoorwayJambsOnTheWallLineKeepTheDoorwayOpen) {
 // The doorway from (4,0) to (6,0) again, but the far jamb's detections scatter along the doorway and the wall
 // beyond it (never twice within the gate of one place, so it never gathers enough detections to be mapped),
 // and the near jamb's label leans only 60 % towards "no wall counter-clockwise" (a jamb seen edge-on).
-MapView DoorwayWithAnUnmappedFarJamb(bool both_ends) {
+MapView DoorwayWithAnUnmappedFarJamb(bool both_ends, bool open_world = false) {
   MapperOptions o = SquareOptions();
   o.wall_past_detection_min = both_ends;
+  if (open_world) o.open_region = core::Aabb2{{-20, -20}, {30, 30}};
   return DriveThroughSquare(o, 7, [](int i, const core::Pose2& pose) {
     std::vector<Detection> d = SquareCorners(pose);
     Detection near_jamb = Det(pose, {4, 0}, core::VertexLabel::kLeftGap);
@@ -185,6 +186,8 @@ TEST(Mapper, AWallPastAnUnmappedJambNeedsBothEndsToSayWall) {
   EXPECT_FALSE(HasWall(view, {4, 0}, {10, 0})) << "a wall across the doorway";
   EXPECT_TRUE(HasWall(view, {0, 0}, {4, 0}));
   EXPECT_FALSE(view.frontiers.empty()) << "the doorway";
+  // Open worlds (buildings without doorways) keep the average.
+  EXPECT_TRUE(HasWall(DoorwayWithAnUnmappedFarJamb(true, true), {4, 0}, {10, 0}));
 }
 
 // Detections of the corner (10,10) scattered around it, the first observation with a second (false) one
