@@ -69,6 +69,7 @@ void SearchOptions::Validate() const {
     throw core::ConfigError("<options>", key, std::to_string(v), why);
   };
   if (stuck_steps < 1) fail("search.stuck_steps", stuck_steps, "must be >= 1");
+  if (unreachable_steps < 1) fail("search.unreachable_steps", unreachable_steps, "must be >= 1");
   if (!(success_iou >= 0 && success_iou <= 1)) fail("search.success_iou", success_iou, "must be in [0, 1]");
   if (!(switch_ratio >= 1)) fail("search.switch_ratio", switch_ratio, "must be >= 1");
   if (!(switch_margin >= 0)) fail("search.switch_margin", switch_margin, "must be >= 0");
@@ -208,6 +209,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     pl.Read("frontier_min_length", &c.planning.frontier_min_length, 0.0, 1000.0);
     pl.Read("frontier_setback", &c.planning.frontier_setback, 0.01, 100.0);
     pl.Read("frontier_row_gap", &c.planning.frontier_row_gap, 0.0, 1000.0);
+    pl.Read("frontier_target_clearance", &c.planning.frontier_target_clearance, 0.0, 1000.0);
     pl.Read("frontier_row_tolerance", &c.planning.frontier_row_tolerance, 0.01, 100.0);
     pl.Finish();
   }
@@ -215,6 +217,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     YamlSection r = top.Section("search");
     SearchOptions& o = c.search;
     r.Read("stuck_steps", &o.stuck_steps, 1, 1000);
+    r.Read("unreachable_steps", &o.unreachable_steps, 1, 100000);
     r.Read("success_iou", &o.success_iou, 0.0, 1.0);
     r.Read("switch_ratio", &o.switch_ratio, 1.0, 100.0);
     r.Read("switch_margin", &o.switch_margin, 0.0, 10000.0);
@@ -224,6 +227,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("count_standing_only", &o.count_standing_only);
     r.Read("give_up_reach", &o.give_up_reach, 0.0, 1000.0);
     r.Read("give_up_probe_radius", &o.give_up_probe_radius, 0.0, 100000.0);
+    r.Read("give_up_in_part", &o.give_up_in_part);
     r.Finish();
   }
   {

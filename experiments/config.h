@@ -44,6 +44,7 @@ struct BenchOptions {
 // How agents search in a trial (the trial loop's policy): YAML section `search:`.
 struct SearchOptions {
   int stuck_steps = 6;            // an agent that moved less than a tenth of a step this many steps is nudged
+  int unreachable_steps = 12;     // frontiers left but none reachable this many steps in a row: explored
   double success_iou = 0.95;      // success: explored and IoU above this (the paper's criterion)
   double switch_ratio = 1.5;      // an agent keeps its frontier unless a new one is cheaper than cost/ratio ...
   double switch_margin = 10.0;    // ... and by more than this
@@ -58,6 +59,10 @@ struct SearchOptions {
                                   // id); 0: off
   double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
                                        // stood (0: all of it)
+  bool give_up_in_part = false;   // a frontier agents could not get to is given up only around its target while
+                                  // the rest of it is at least planning.frontier_min_length long: its target
+                                  // moves to the middle of the longest stretch farther than give_up_reach from
+                                  // where frontiers were probed (one agents stood next to is given up whole)
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };
 

@@ -306,6 +306,7 @@ int RunMap(MapArgs a) {
 struct TrialArgs : WorldSource {
   std::string out = "results/trial";
   std::string video;
+  std::string trace;
   experiments::TrialOptions trial;
 };
 
@@ -316,18 +317,52 @@ int RunTrialCommand(const TrialArgs& a) {
   mapping::MapView view;
   experiments::TrialOptions t = a.trial;
   std::unique_ptr<experiments::TrialVideo> video;
-  if (!a.video.empty()) {
-    video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
-    t.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video->AddFrame(v, paths); };
+  if (!a.video.empty()) video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
+  // Trace: one CSV row a step (the map the planners used; the last row is the final map the metrics score).
+  std::ofstream trace;
+  if (!a.trace.empty()) {
+    trace.open(a.trace);
+    if (!trace) throw core::DataError(a.trace, "cannot write the trace file");
+    trace << "step,iou,frontiers,targets,map_vertices,map_walls";
+    for (int i = 0; i < t.num_agents; ++i) trace << fmt::format(",x{0},y{0},frontier{0},goal_x{0},goal_y{0}", i);
+    trace << "\n";
   }
+  // What the planners chose this step (targets on offer; each agent's frontier and the end of its path),
+  // written with the step's row; the final row has none.
+  std::string plan_targets;
+  std::vector<std::string> plan_goals;
+  if (trace.is_open())
+    t.on_plan = [&](const std::vector<planning::FrontierTarget>& targets, const std::vector<planning::FrontierChoice>& choices) {
+      plan_targets = std::to_string(targets.size());
+      plan_goals.clear();
+      for (const auto& c : choices)
+        plan_goals.push_back(c.status == planning::PlanStatus::kFound && !c.path.points.empty()
+                                 ? fmt::format("{},{:.2f},{:.2f}", c.frontier_id, c.path.points.back().x, c.path.points.back().y)
+                                 : std::string(",,"));
+    };
+  if (video || trace.is_open())
+    t.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
+      if (video) video->AddFrame(v, paths);
+      if (!trace.is_open()) return;
+      const double iou = w.has_boundary() ? experiments::KnownSpaceIoU(w, v) : experiments::BuildingPlacementIoU(w, v);
+      trace << fmt::format("{},{:.5f},{},{},{},{}", paths.front().size() - 1, iou, v.frontiers.size(), plan_targets,
+                           v.vertices.size(), v.walls.size());
+      for (size_t i = 0; i < paths.size(); ++i)
+        trace << fmt::format(",{:.2f},{:.2f},{}", paths[i].back().x, paths[i].back().y, i < plan_goals.size() ? plan_goals[i] : ",,");
+      trace << "\n";
+      plan_targets.clear();
+      plan_goals.clear();
+    };
   const auto r = experiments::RunSearchTrial(w, cfg, t, a.seed, &view);
   if (video) fmt::print("wrote {} ({} frames)\n", a.video, video->frames());
+  if (trace.is_open()) fmt::print("wrote {} ({} steps)\n", a.trace, r.steps);
   experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string());
   double total = 0;
   for (double d : r.distance) total += d;
-  fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, {:.1f} s -> {}\n",
+  fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, "
+             "frontiers given up {}, {:.1f} s -> {}\n",
              a.seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
-             r.wall_time_s, (fs::path(a.out) / "trial.png").string());
+             r.give_ups, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
   return 0;
 }
 
@@ -477,6 +512,7 @@ int main(int argc, char** argv) {
   trial->add_option("--mcmc-every", ta.trial.mcmc_every, "MCMC every this many steps (0: never)")->capture_default_str()->check(CLI::Range(0, 100000));
   trial->add_option("--out", ta.out, "Output directory: trial.png")->capture_default_str();
   trial->add_option("--video", ta.video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
+  trial->add_option("--trace", ta.trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals");
 
   BenchArgs ba;
   auto* bench = app.add_subcommand("bench", "Run a search benchmark (paper Table I): trials in parallel processes, "

@@ -66,16 +66,26 @@ bool ClipToDisc(const Vec2& a, const Vec2& b, const Vec2& c, double radius, core
 
 }  // namespace
 
+void GivenUpFrontiers::AddPieces(const mapping::Frontier& f, const Vec2* probed_at) {
+  for (const auto& e : Edges(f.points)) {
+    core::Segment2 piece = e;
+    if (!probed_at || probe_radius_ <= 0 || ClipToDisc(e.a, e.b, *probed_at, probe_radius_, &piece)) edges_.push_back(piece);
+  }
+}
+
 void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& frontiers, const Vec2* probed_at) {
   if (!ids_.insert(id).second) return;
+  ++given_up_;
   for (const auto& f : frontiers) {
     if (f.id != id) continue;
     extent_[id] = Edges(f.points);
-    for (const auto& e : extent_[id]) {
-      core::Segment2 piece = e;
-      if (!probed_at || probe_radius_ <= 0 || ClipToDisc(e.a, e.b, *probed_at, probe_radius_, &piece)) edges_.push_back(piece);
-    }
+    AddPieces(f, probed_at);
   }
+}
+
+void GivenUpFrontiers::Probe(int id, const std::vector<mapping::Frontier>& frontiers, const Vec2& probed_at) {
+  for (const auto& f : frontiers)
+    if (f.id == id) AddPieces(f, &probed_at);
 }
 
 std::vector<int> GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& frontiers) {
@@ -153,9 +163,35 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     po.clearance = std::min(std::max(po.clearance, config.motion.agent_radius + 0.25), 0.9 * po.inflation_radius);
     std::vector<planning::FrontierTarget> targets, original;
     for (int id : given_up.Update(view.frontiers)) near_steps[id] = 0;  // the same place under a new id; grown ones back
-    for (const auto& t : planning::FrontierTargets(view, po))
-      if ((!open_world || world.bounds.Contains(t.point)) && !given_up.Contains(t.frontier_id)) targets.push_back(t);
+    auto frontier = [&](int id) -> const mapping::Frontier* {
+      for (const auto& f : view.frontiers)
+        if (f.id == id) return &f;
+      return nullptr;
+    };
+    for (auto t : planning::FrontierTargets(view, po)) {
+      if (given_up.Contains(t.frontier_id)) continue;
+      // Where part of a frontier was given up, the rest of it is the target (none left: given up by place).
+      const mapping::Frontier* f = frontier(t.frontier_id);
+      if (so.give_up_in_part && f && !given_up.probed().empty() &&
+          !planning::FrontierTargetAwayFrom(view, *f, given_up.probed(), so.give_up_reach, po, &t))
+        continue;
+      if (!open_world || world.bounds.Contains(t.point)) targets.push_back(t);
+    }
     original = targets;
+    // Gives up frontier 'id', probed at 'at'.  'stuck': agents could not get to it; then, with give_up_in_part,
+    // a long one keeps the rest as a target (counted afresh), else all of it is recorded as probed.
+    auto give_up = [&](int id, const Vec2& at, bool stuck) {
+      const mapping::Frontier* f = frontier(id);
+      if (stuck && so.give_up_in_part && f) {
+        given_up.Probe(id, view.frontiers, at);
+        planning::FrontierTarget rest;
+        if (planning::FrontierTargetAwayFrom(view, *f, given_up.probed(), so.give_up_reach, po, &rest)) {
+          near_steps[id] = 0;
+          return;
+        }
+      }
+      given_up.GiveUp(id, view.frontiers, stuck ? nullptr : &at);
+    };
     // A frontier agents have stood next to for a while without it receding (the map does not take in what
     // lies beyond yet) is pushed through: its target moves into the unknown space behind it, so an agent
     // walks in and looks from there (the optimistic planner counts unknown space as free).
@@ -193,6 +229,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     }
     for (int a = 0; a < o.num_agents; ++a)
       committed[size_t(a)] = choices[size_t(a)].status == planning::PlanStatus::kFound ? choices[size_t(a)].frontier_id : -1;
+    if (o.on_plan) o.on_plan(targets, choices);
     bool any = false;
     for (const auto& c : choices) any = any || c.status == planning::PlanStatus::kFound;
     r.steps = step + 1;
@@ -204,7 +241,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     // Frontiers none of the agents can reach for a while: no reachable frontier is left, which is the
     // paper's definition of explored (a map error that walls one off shows in the IoU instead).
     unreachable = any || targets.empty() ? 0 : unreachable + 1;
-    if (unreachable > 4 * so.stuck_steps) {
+    if (unreachable >= so.unreachable_steps) {
       r.end_reason = "unreachable";
       r.explored = true;
       break;
@@ -227,7 +264,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
                                                 core::Distance(p, original[i].point) < so.give_up_distance));
       }
       if (near && ++near_steps[targets[i].frontier_id] > so.give_up_steps)
-        given_up.GiveUp(targets[i].frontier_id, view.frontiers, &original[i].point);
+        give_up(targets[i].frontier_id, original[i].point, false);
     }
     int stuck = 0;
     for (int a = 0; a < o.num_agents; ++a) {
@@ -246,8 +283,13 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       if ((!path.empty() && s.distance < 0.1 * step_length) || no_way || pacing) {
         // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward
         // giving it up as if it stood next to it (both, if it is stuck next to it).
-        if (c.status == planning::PlanStatus::kFound && ++near_steps[c.frontier_id] > so.give_up_steps)
-          given_up.GiveUp(c.frontier_id, view.frontiers);
+        if (c.status == planning::PlanStatus::kFound && ++near_steps[c.frontier_id] > so.give_up_steps) {
+          // Probed where its target is: a long frontier may be reachable elsewhere along it.
+          Vec2 at = c.path.points.back();
+          for (size_t i = 0; i < targets.size(); ++i)
+            if (targets[i].frontier_id == c.frontier_id) at = original[i].point;
+          give_up(c.frontier_id, at, true);
+        }
         if (++still[size_t(a)] >= so.stuck_steps) {
           // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
           const double ang = rng.Uniform(-core::kPi, core::kPi);
@@ -270,6 +312,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   if (o.on_step) o.on_step(view, r.paths);  // the final map, the one the metrics score
   r.iou = open_world ? BuildingPlacementIoU(world, view) : KnownSpaceIoU(world, view);
   r.success = r.explored && r.iou > so.success_iou;
+  r.give_ups = given_up.given_up();
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (final_view) *final_view = view;
   return r;

@@ -23,6 +23,8 @@ struct TrialOptions {
   // Called after every step with the map the planners used and the agents' paths so far, and once more
   // with the final map the metrics score (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
+  // Called every step before agents move with the frontier targets on offer and each agent's choice (traces).
+  std::function<void(const std::vector<planning::FrontierTarget>&, const std::vector<planning::FrontierChoice>&)> on_plan;
 };
 
 struct TrialResult {
@@ -34,6 +36,7 @@ struct TrialResult {
   double iou = 0.0;               // indoor: known space vs true free space; office park: building placement
   std::vector<double> distance;   // travelled per agent
   int nudges = 0;                 // stuck-agent perturbations
+  int give_ups = 0;               // frontiers given up (agents stood next to them, or were stuck on the way)
   std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;
   // Where the time went: observations and map updates, MCMC, known space and frontiers, planning and motion.
@@ -58,13 +61,20 @@ class GivenUpFrontiers {
   // returns the ids taken back.
   std::vector<int> Update(const std::vector<mapping::Frontier>& frontiers);
   bool Contains(int id) const { return ids_.count(id) > 0; }
+  int given_up() const { return given_up_; }  // frontiers given up with GiveUp (not counting re-created ones)
+  // Records where frontier 'id' was probed (the part of it within probe_radius of 'probed_at') without giving
+  // it up: the rest of a long frontier stays a target.
+  void Probe(int id, const std::vector<mapping::Frontier>& frontiers, const core::Vec2& probed_at);
+  const std::vector<core::Segment2>& probed() const { return edges_; }  // pieces given up or probed
 
  private:
+  void AddPieces(const mapping::Frontier& f, const core::Vec2* probed_at);
   double reach_, probe_radius_;
   std::set<int> ids_;
   std::vector<core::Segment2> edges_;                 // where given-up frontiers were probed
   std::map<int, std::vector<core::Segment2>> extent_;  // each given-up frontier's polyline when given up
   std::set<int> taken_back_;
+  int given_up_ = 0;
   static constexpr double kRegrowth = 4.0;            // taken back when it reaches this many 'reach' past it
 };
 

@@ -21,6 +21,8 @@ void PlannerOptions::Validate() const {
   if (!(frontier_setback > 0)) fail("planning.frontier_setback", frontier_setback, "must be > 0");
   if (!(frontier_row_gap >= 0)) fail("planning.frontier_row_gap", frontier_row_gap, "must be >= 0");
   if (!(frontier_row_tolerance > 0)) fail("planning.frontier_row_tolerance", frontier_row_tolerance, "must be > 0");
+  if (!(frontier_target_clearance >= 0))
+    fail("planning.frontier_target_clearance", frontier_target_clearance, "must be >= 0");
 }
 
 namespace {
@@ -230,34 +232,148 @@ bool AlongVertexRow(const mapping::Frontier& f, const mapping::MapView& view, co
   return true;
 }
 
+namespace {
+
+// The target for a frontier at 'point' on it, where its local direction is 'dir': 'frontier_setback' inside
+// known space (the point itself where known space is thinner than that).
+FrontierTarget TargetAt(const mapping::MapView& view, const mapping::Frontier& f, const Vec2& point, const Vec2& dir,
+                        const PlannerOptions& options) {
+  Vec2 target = point, outward{-dir.y, dir.x};
+  for (const double side : {1.0, -1.0}) {
+    const Vec2 p = point + Vec2{-dir.y, dir.x} * (side * options.frontier_setback);
+    if (InKnown(view, p)) {
+      target = p;
+      outward = Vec2{-dir.y, dir.x} * -side;
+      break;
+    }
+  }
+  return {f.id, target, f.length, outward};
+}
+
+// Points along a frontier's polyline, 'step' apart, with the direction of the segment under each.
+struct Sample {
+  Vec2 p, dir;
+  double s;  // arc length
+};
+std::vector<Sample> SampleFrontier(const mapping::Frontier& f, double step) {
+  std::vector<Sample> samples;
+  double s0 = 0;
+  for (size_t i = 1; i < f.points.size(); ++i) {
+    const Vec2 a = f.points[i - 1], b = f.points[i];
+    const double len = core::Distance(a, b);
+    if (len < 1e-9) continue;
+    const Vec2 dir = (b - a) / len;
+    const int n = std::max(1, int(std::ceil(len / step)));
+    for (int k = 0; k < n; ++k) samples.push_back({a + dir * (len * k / n), dir, s0 + len * k / n});
+    s0 += len;
+    if (i + 1 == f.points.size()) samples.push_back({b, dir, s0});
+  }
+  return samples;
+}
+
+// How far 'p' is from the map's walls and vertices.
+double Clearance(const mapping::MapView& view, const Vec2& p) {
+  double c = std::numeric_limits<double>::infinity();
+  for (const auto& w : view.walls) c = std::min(c, core::DistanceToSegment(p, {w.pa, w.pb}));
+  for (const auto& v : view.vertices) c = std::min(c, core::Distance(p, v.position));
+  return c;
+}
+
+// The target for the stretch [a, b) of 'samples' around its middle 'mid' (a sample index): there, unless
+// options.frontier_target_clearance asks for more room than it has, then the nearest sample of the stretch
+// that has it (the one with the most room if none has).
+FrontierTarget TargetInStretch(const mapping::MapView& view, const mapping::Frontier& f, const std::vector<Sample>& samples,
+                               size_t a, size_t b, size_t mid, const PlannerOptions& options) {
+  FrontierTarget t = TargetAt(view, f, samples[mid].p, samples[mid].dir, options);
+  const double want = options.frontier_target_clearance;
+  if (want <= 0) return t;
+  double best = Clearance(view, t.point);
+  if (best >= want) return t;
+  // Outward from the middle, alternating sides: the first sample with room wins.
+  for (size_t k = 1; mid + k < b || mid >= a + k; ++k) {
+    for (const size_t i : {mid + k, mid - k}) {
+      if (i < a || i >= b || (i == mid - k && mid < a + k)) continue;
+      const FrontierTarget c = TargetAt(view, f, samples[i].p, samples[i].dir, options);
+      const double room = Clearance(view, c.point);
+      if (room > best) {
+        best = room;
+        t = c;
+      }
+      if (room >= want) return t;
+    }
+  }
+  return t;
+}
+
+// The target around the frontier's midpoint (the direction of the segment under it).
+FrontierTarget MidpointTarget(const mapping::MapView& view, const mapping::Frontier& f, const PlannerOptions& options) {
+  if (options.frontier_target_clearance > 0) {
+    const std::vector<Sample> samples = SampleFrontier(f, 0.5);
+    size_t mid = 0;
+    while (mid + 1 < samples.size() && samples[mid + 1].s <= 0.5 * samples.back().s) ++mid;
+    if (!samples.empty()) return TargetInStretch(view, f, samples, 0, samples.size(), mid, options);
+  }
+  double best = std::numeric_limits<double>::infinity();
+  Vec2 dir{1, 0};
+  for (size_t i = 1; i < f.points.size(); ++i) {
+    const double d = core::DistanceToSegment(f.midpoint, {f.points[i - 1], f.points[i]});
+    if (d < best && core::Distance(f.points[i - 1], f.points[i]) > 1e-9) {
+      best = d;
+      dir = (f.points[i] - f.points[i - 1]) / core::Distance(f.points[i - 1], f.points[i]);
+    }
+  }
+  return TargetAt(view, f, f.midpoint, dir, options);
+}
+
+}  // namespace
+
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options) {
   std::vector<FrontierTarget> out;
   for (const auto& f : view.frontiers) {
     if (f.length < options.frontier_min_length || f.points.size() < 2) continue;
     if (AlongVertexRow(f, view, options)) continue;
-    // The frontier segment under the midpoint, and the side of it that is known space.
-    double best = std::numeric_limits<double>::infinity();
-    Vec2 dir{1, 0};
-    for (size_t i = 1; i < f.points.size(); ++i) {
-      const double d = core::DistanceToSegment(f.midpoint, {f.points[i - 1], f.points[i]});
-      if (d < best && core::Distance(f.points[i - 1], f.points[i]) > 1e-9) {
-        best = d;
-        dir = (f.points[i] - f.points[i - 1]) / core::Distance(f.points[i - 1], f.points[i]);
-      }
-    }
-    // Where known space is thinner than the setback (a sliver), use the midpoint itself.
-    Vec2 target = f.midpoint, outward{-dir.y, dir.x};
-    for (const double side : {1.0, -1.0}) {
-      const Vec2 p = f.midpoint + Vec2{-dir.y, dir.x} * (side * options.frontier_setback);
-      if (InKnown(view, p)) {
-        target = p;
-        outward = Vec2{-dir.y, dir.x} * -side;
-        break;
-      }
-    }
-    out.push_back({f.id, target, f.length, outward});
+    out.push_back(MidpointTarget(view, f, options));
   }
   return out;
+}
+
+bool FrontierTargetAwayFrom(const mapping::MapView& view, const mapping::Frontier& f,
+                            const std::vector<core::Segment2>& probed, double reach, const PlannerOptions& options,
+                            FrontierTarget* target) {
+  // Walk the polyline in small steps; the longest run of points farther than 'reach' from every probed piece.
+  const std::vector<Sample> samples = SampleFrontier(f, 0.5);
+  auto free = [&](const Vec2& p) {
+    for (const auto& e : probed)
+      if (core::DistanceToSegment(p, e) <= reach) return false;
+    return true;
+  };
+  size_t best_a = 0, best_b = 0;  // [a, b) samples
+  double best_len = -1;
+  for (size_t i = 0; i < samples.size();) {
+    if (!free(samples[i].p)) {
+      ++i;
+      continue;
+    }
+    size_t j = i;
+    while (j < samples.size() && free(samples[j].p)) ++j;
+    const double len = samples[j - 1].s - samples[i].s;
+    if (len > best_len) {
+      best_len = len;
+      best_a = i;
+      best_b = j;
+    }
+    i = j;
+  }
+  if (best_len < options.frontier_min_length) return false;
+  if (best_a == 0 && best_b == samples.size()) {  // nothing of it probed: the usual target
+    *target = MidpointTarget(view, f, options);
+    return true;
+  }
+  const double mid = 0.5 * (samples[best_a].s + samples[best_b - 1].s);
+  size_t k = best_a;
+  while (k + 1 < best_b && samples[k + 1].s <= mid) ++k;
+  *target = TargetInStretch(view, f, samples, best_a, best_b, k, options);
+  return true;
 }
 
 FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "core/error.h"
@@ -110,6 +111,22 @@ TEST(GivenUpFrontiers, OnlyThePartProbedOfALongFrontierStaysGivenUpByPlace) {
   whole.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &probed);
   whole.Update({MakeFrontier(8, {{0, 70}, {0, 90}})});
   EXPECT_TRUE(whole.Contains(8));
+}
+
+TEST(GivenUpFrontiers, ProbingRecordsThePartNearThePointWithoutGivingTheFrontierUp) {
+  GivenUpFrontiers g(3.0, 20.0);
+  const core::Vec2 at{1, 50};
+  g.Probe(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, at);
+  EXPECT_FALSE(g.Contains(4));
+  EXPECT_EQ(g.given_up(), 0);
+  ASSERT_EQ(g.probed().size(), 1u);
+  EXPECT_NEAR(g.probed()[0].a.y, 50.0 - std::sqrt(399.0), 1e-9);  // the part within 20 of (1, 50)
+  EXPECT_NEAR(g.probed()[0].b.y, 50.0 + std::sqrt(399.0), 1e-9);
+  g.Probe(5, {MakeFrontier(4, {{0, 0}, {0, 100}})}, at);  // no frontier 5 there: nothing recorded
+  EXPECT_EQ(g.probed().size(), 1u);
+  g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &at);
+  EXPECT_TRUE(g.Contains(4));
+  EXPECT_EQ(g.given_up(), 1);
 }
 
 TEST(GivenUpFrontiers, AFrontierThatGrowsWellPastWhereItWasGivenUpIsTakenBackOnce) {

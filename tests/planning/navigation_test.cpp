@@ -140,6 +140,62 @@ TEST(Frontiers, AStraightFrontierAlongCloseDetectedVerticesIsAWall) {
   EXPECT_EQ(FrontierTargets(chord(12), off).size(), 1u);
 }
 
+TEST(Frontiers, TheTargetOfAPartlyProbedFrontierIsTheMiddleOfItsLongestUnprobedStretch) {
+  const auto view = RoomWithAnOpenTop({});  // frontier y = 20, x in [0, 40]
+  const PlannerOptions o;
+  FrontierTarget t;
+  // Nothing probed: the usual target at the midpoint.
+  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {}, 3.0, o, &t));
+  const auto usual = FrontierTargets(view, o);
+  ASSERT_EQ(usual.size(), 1u);
+  EXPECT_NEAR(t.point.x, usual[0].point.x, 1e-9);
+  EXPECT_NEAR(t.point.y, usual[0].point.y, 1e-9);
+  // Probed over x in [5, 20]: farther than 3 from it is x > 23 (17 long) and x < 2 (too short); the target is
+  // in the middle of the long stretch, set back into the room, and points out through the frontier.
+  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{5, 20}, {20, 20}}}, 3.0, o, &t));
+  EXPECT_EQ(t.frontier_id, 1);
+  EXPECT_NEAR(t.point.x, 31.5, 0.51);
+  EXPECT_NEAR(t.point.y, 20.0 - o.frontier_setback, 1e-9);
+  EXPECT_NEAR(t.outward.y, 1.0, 1e-9);
+  // Probed nearly all along: no stretch as long as frontier_min_length is left.
+  EXPECT_FALSE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{0, 20}, {34, 20}}}, 3.0, o, &t));
+}
+
+TEST(Frontiers, AFrontierTargetInASliverOfKnownSpaceMovesAlongTheFrontierToRoom) {
+  // A corridor (x in [0, 20], y in [20, 60]) whose right side is a frontier x = 20 from y = -20 to 60; below
+  // y = 20 the known space is a sliver x in [17, 20] beside a wall: the chord runs along a room's wall.
+  const std::vector<Vec2> corners = {{0, 60}, {0, 20}, {17, 20}, {17, -20}, {20, -20}, {20, 60}};
+  auto view = View(corners, {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 0}},
+                   {core::Ring{{0, 60}, {0, 20}, {17, 20}, {17, -20}, {20, -20}, {20, 60}}});
+  view.frontiers = {{1, {{20, -20}, {20, 60}}, {20, 20}, 80.0}};
+  PlannerOptions o;
+  const auto mid = FrontierTargets(view, o);
+  ASSERT_EQ(mid.size(), 1u);
+  EXPECT_NEAR(mid[0].point.x, 18.0, 1e-9) << "set back 2 from the middle, 1 from the corner (17, 20)";
+  EXPECT_NEAR(mid[0].point.y, 20.0, 1e-9);
+  o.frontier_target_clearance = 4.8;
+  const auto moved = FrontierTargets(view, o);
+  ASSERT_EQ(moved.size(), 1u);
+  EXPECT_NEAR(moved[0].point.x, 18.0, 1e-9);
+  EXPECT_NEAR(moved[0].point.y, 25.0, 1e-9) << "the nearest point 4.8 from the corner, up the corridor";
+  EXPECT_NEAR(moved[0].outward.x, 1.0, 1e-9);
+  EXPECT_EQ(moved[0].frontier_id, 1);
+  // A doorway with room at its middle keeps its target there.
+  const auto door = RoomWithAnOpenTop({});
+  const auto kept = FrontierTargets(door, o);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_NEAR(kept[0].point.x, 20.0, 1e-9);
+  // The same rule inside the unprobed stretch of a partly probed frontier: probed over y in [-20, 10],
+  // the stretch y > 13 has its middle at about 36.5, which has room already.
+  FrontierTarget t;
+  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{20, -20}, {20, 10}}}, 3.0, o, &t));
+  EXPECT_NEAR(t.point.y, 36.5, 0.51);
+  // Probed over y in [20, 60]: the stretch y < 17 is all sliver (1 from the wall x = 17): no point has more
+  // room than its middle, which stays the target.
+  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{20, 20}, {20, 60}}}, 3.0, o, &t));
+  EXPECT_NEAR(t.point.y, -1.75, 0.51);
+}
+
 TEST(Frontiers, SingleAgentGoesToTheNearest) {
   const auto view = ThreeDoorRoom();
   const VisibilityGraph g(view, {}, true);
