@@ -70,6 +70,7 @@ void SearchOptions::Validate() const {
   };
   if (stuck_steps < 1) fail("search.stuck_steps", stuck_steps, "must be >= 1");
   if (unreachable_steps < 1) fail("search.unreachable_steps", unreachable_steps, "must be >= 1");
+  if (!(depth_weight >= 0)) fail("search.depth_weight", depth_weight, "must be >= 0");
   if (!(success_iou >= 0 && success_iou <= 1)) fail("search.success_iou", success_iou, "must be in [0, 1]");
   if (!(switch_ratio >= 1)) fail("search.switch_ratio", switch_ratio, "must be >= 1");
   if (!(switch_margin >= 0)) fail("search.switch_margin", switch_margin, "must be >= 0");
@@ -228,6 +229,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("give_up_reach", &o.give_up_reach, 0.0, 1000.0);
     r.Read("give_up_probe_radius", &o.give_up_probe_radius, 0.0, 100000.0);
     r.Read("give_up_in_part", &o.give_up_in_part);
+    r.Read("depth_weight", &o.depth_weight, 0.0, 1000.0);
     r.Finish();
   }
   {

@@ -59,6 +59,9 @@ struct SearchOptions {
                                   // id); 0: off
   double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
                                        // stood (0: all of it)
+  double depth_weight = 0.0;      // a frontier's cost counts this much of the depth of the search region behind it
+                                  // (from its target along its outward normal to the region's bounds): shallow
+                                  // ones first, so a search does not leave a pocket behind; 0: off
   bool give_up_in_part = false;   // a frontier agents could not get to is given up only around its target while
                                   // the rest of it is at least planning.frontier_min_length long: its target
                                   // moves to the middle of the longest stretch farther than give_up_reach from

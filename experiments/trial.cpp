@@ -3,7 +3,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -62,6 +64,17 @@ bool ClipToDisc(const Vec2& a, const Vec2& b, const Vec2& c, double radius, core
   if (t0 > t1) return false;
   *out = {a + d * t0, a + d * t1};
   return true;
+}
+
+// How far a ray from 'p' along unit 'dir' runs inside 'box' (0 from outside it).
+double DepthInBox(const Vec2& p, const Vec2& dir, const core::Aabb2& box) {
+  if (!box.Contains(p)) return 0.0;
+  double t = std::numeric_limits<double>::infinity();
+  if (dir.x > 1e-12) t = std::min(t, (box.max.x - p.x) / dir.x);
+  if (dir.x < -1e-12) t = std::min(t, (box.min.x - p.x) / dir.x);
+  if (dir.y > 1e-12) t = std::min(t, (box.max.y - p.y) / dir.y);
+  if (dir.y < -1e-12) t = std::min(t, (box.min.y - p.y) / dir.y);
+  return std::isfinite(t) ? t : 0.0;
 }
 
 }  // namespace
@@ -200,6 +213,10 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       const Vec2 pushed = t.point + t.outward * (po.frontier_setback + so.push_distance);
       if (!open_world || world.bounds.Contains(pushed)) t.point = pushed;  // never out of the search region
     }
+    // Shallow frontiers first: one with little of the search region behind it costs less (a pocket the agent
+    // would otherwise leave behind and walk back to at the end).
+    if (so.depth_weight > 0)
+      for (auto& t : targets) t.bias = so.depth_weight * DepthInBox(t.point, t.outward, world.bounds);
     // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out
     // on the way and the plan is redone every step.
     const planning::VisibilityGraph graph(view, po, false);
@@ -214,10 +231,13 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
       auto& c = choices[size_t(a)];
       const int prev = committed[size_t(a)];
       if (prev < 0 || c.status != planning::PlanStatus::kFound || c.frontier_id == prev) continue;
+      double bias = 0;  // the new choice's
+      for (const auto& t : targets)
+        if (t.frontier_id == c.frontier_id) bias = t.bias;
       for (const auto& t : targets) {
         if (t.frontier_id != prev) continue;
         const planning::Path keep = graph.Plan(agents[size_t(a)], t.point);
-        if (keep && keep.cost <= so.switch_ratio * c.path.cost + so.switch_margin) {
+        if (keep && keep.cost + t.bias <= so.switch_ratio * (c.path.cost + bias) + so.switch_margin) {
           bool taken = false;  // a team member may have been given it meanwhile
           for (int b = 0; b < o.num_agents; ++b) taken = taken || (b != a && choices[size_t(b)].frontier_id == prev);
           if (!taken) {

@@ -271,11 +271,13 @@ std::vector<Sample> SampleFrontier(const mapping::Frontier& f, double step) {
   return samples;
 }
 
-// How far 'p' is from the map's walls and vertices.
+// How far 'p' is from the map's walls and vertices and the seen candidate vertices (which line walls the map
+// has not accepted yet).
 double Clearance(const mapping::MapView& view, const Vec2& p) {
   double c = std::numeric_limits<double>::infinity();
   for (const auto& w : view.walls) c = std::min(c, core::DistanceToSegment(p, {w.pa, w.pb}));
-  for (const auto& v : view.vertices) c = std::min(c, core::Distance(p, v.position));
+  for (const auto* list : {&view.vertices, &view.rejected})
+    for (const auto& v : *list) c = std::min(c, core::Distance(p, v.position));
   return c;
 }
 
@@ -305,14 +307,8 @@ FrontierTarget TargetInStretch(const mapping::MapView& view, const mapping::Fron
   return t;
 }
 
-// The target around the frontier's midpoint (the direction of the segment under it).
+// The target at the frontier's midpoint (the direction of the segment under it).
 FrontierTarget MidpointTarget(const mapping::MapView& view, const mapping::Frontier& f, const PlannerOptions& options) {
-  if (options.frontier_target_clearance > 0) {
-    const std::vector<Sample> samples = SampleFrontier(f, 0.5);
-    size_t mid = 0;
-    while (mid + 1 < samples.size() && samples[mid + 1].s <= 0.5 * samples.back().s) ++mid;
-    if (!samples.empty()) return TargetInStretch(view, f, samples, 0, samples.size(), mid, options);
-  }
   double best = std::numeric_limits<double>::infinity();
   Vec2 dir{1, 0};
   for (size_t i = 1; i < f.points.size(); ++i) {
@@ -325,6 +321,17 @@ FrontierTarget MidpointTarget(const mapping::MapView& view, const mapping::Front
   return TargetAt(view, f, f.midpoint, dir, options);
 }
 
+// The target at the frontier's midpoint, or where it has room (options.frontier_target_clearance).
+FrontierTarget RoomyTarget(const mapping::MapView& view, const mapping::Frontier& f, const PlannerOptions& options) {
+  const FrontierTarget t = MidpointTarget(view, f, options);
+  if (options.frontier_target_clearance <= 0 || Clearance(view, t.point) >= options.frontier_target_clearance) return t;
+  const std::vector<Sample> samples = SampleFrontier(f, 0.5);
+  if (samples.empty()) return t;
+  size_t mid = 0;
+  while (mid + 1 < samples.size() && samples[mid + 1].s <= 0.5 * samples.back().s) ++mid;
+  return TargetInStretch(view, f, samples, 0, samples.size(), mid, options);
+}
+
 }  // namespace
 
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options) {
@@ -332,7 +339,7 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
   for (const auto& f : view.frontiers) {
     if (f.length < options.frontier_min_length || f.points.size() < 2) continue;
     if (AlongVertexRow(f, view, options)) continue;
-    out.push_back(MidpointTarget(view, f, options));
+    out.push_back(RoomyTarget(view, f, options));
   }
   return out;
 }
@@ -366,7 +373,7 @@ bool FrontierTargetAwayFrom(const mapping::MapView& view, const mapping::Frontie
   }
   if (best_len < options.frontier_min_length) return false;
   if (best_a == 0 && best_b == samples.size()) {  // nothing of it probed: the usual target
-    *target = MidpointTarget(view, f, options);
+    *target = RoomyTarget(view, f, options);
     return true;
   }
   const double mid = 0.5 * (samples[best_a].s + samples[best_b - 1].s);
@@ -384,8 +391,10 @@ FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::ve
   for (const auto& t : targets) goals.push_back(t.point);
   const std::vector<Path> paths = graph.PlanToMany(agent, goals);
   choice.status = PlanStatus::kNoPath;
+  double best = 0;
   for (size_t k = 0; k < paths.size(); ++k)
-    if (paths[k] && (choice.status != PlanStatus::kFound || paths[k].cost < choice.path.cost)) {
+    if (paths[k] && (choice.status != PlanStatus::kFound || paths[k].cost + targets[k].bias < best)) {
+      best = paths[k].cost + targets[k].bias;
       choice.status = PlanStatus::kFound;
       choice.frontier_id = targets[k].frontier_id;
       choice.path = paths[k];
@@ -402,7 +411,7 @@ std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const 
   std::vector<std::vector<Path>> paths;
   for (const auto& a : agents) paths.push_back(graph.PlanToMany(a, goals));
   const double kUnreachable = 1e9;
-  auto cost = [&](size_t a, size_t t) { return paths[a][t] ? paths[a][t].cost : kUnreachable; };
+  auto cost = [&](size_t a, size_t t) { return paths[a][t] ? paths[a][t].cost + targets[t].bias : kUnreachable; };
   auto take = [&](size_t a, size_t t) {
     if (!paths[a][t]) {
       out[a].status = PlanStatus::kNoPath;

@@ -76,6 +76,7 @@ struct FrontierTarget {
   core::Vec2 point;
   double length = 0.0;
   core::Vec2 outward{1, 0};  // unit normal of the frontier at its midpoint, pointing into unknown space
+  double bias = 0.0;         // added to the path cost when agents choose among targets (a search policy's)
 };
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options);
 // The target for the part of 'frontier' farther than 'reach' from every one of 'probed' (pieces of frontiers
@@ -95,11 +96,11 @@ struct FrontierChoice {
   Path path;
 };
 
-// Single agent: the reachable frontier with the cheapest path.
+// Single agent: the reachable frontier with the cheapest path (path cost plus the target's bias).
 FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                      const core::Vec2& agent);
 
-// A team: agents assigned to distinct frontiers minimizing the summed path cost (Hungarian); when there are
+// A team: agents assigned to distinct frontiers minimizing the summed cost (path plus bias, Hungarian); when there are
 // fewer reachable frontiers than agents, the extra agents take their own cheapest frontier.
 std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                             const std::vector<core::Vec2>& agents);

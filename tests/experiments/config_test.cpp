@@ -38,11 +38,12 @@ TEST(Config, ValuesAreRead) {
 TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   const Config c = ParseConfig(
       "search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  count_standing_only: false\n  unreachable_steps: 9\n"
-      "  give_up_in_part: false\n",
+      "  give_up_in_part: true\n  depth_weight: 0.5\n",
       "x.yaml");
   EXPECT_EQ(c.search.give_up_steps, 12);
   EXPECT_EQ(c.search.unreachable_steps, 9);
-  EXPECT_FALSE(c.search.give_up_in_part);
+  EXPECT_TRUE(c.search.give_up_in_part);
+  EXPECT_DOUBLE_EQ(c.search.depth_weight, 0.5);
   EXPECT_DOUBLE_EQ(c.search.switch_ratio, 2.0);
   EXPECT_FALSE(c.search.count_standing_only);
   EXPECT_DOUBLE_EQ(c.search.push_distance, SearchOptions{}.push_distance) << "unset keys keep their defaults";
@@ -52,6 +53,7 @@ TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   EXPECT_EQ(e.value(), "0.5");
   EXPECT_EQ(ErrorOf("search:\n  give_up_step: 12\n").key(), "search.give_up_step");
   EXPECT_EQ(ErrorOf("search:\n  unreachable_steps: 0\n").key(), "search.unreachable_steps");
+  EXPECT_EQ(ErrorOf("search:\n  depth_weight: -1\n").key(), "search.depth_weight");
   // Built in code, not read: the same rules, named by key.
   Config bad;
   bad.source = "in-code";

@@ -205,6 +205,32 @@ TEST(Frontiers, SingleAgentGoesToTheNearest) {
   EXPECT_EQ(ChooseNearestFrontier(g, {}, {17, 10}).status, PlanStatus::kNothingToExplore);
 }
 
+TEST(Frontiers, ATargetsBiasAddsToItsPathCostWhenChoosing) {
+  const auto view = ThreeDoorRoom();
+  const VisibilityGraph g(view, {}, true);
+  auto targets = FrontierTargets(view, {});
+  ASSERT_EQ(targets.size(), 3u);
+  // From (17, 10) door 1 (x = 20) is ~1 away, door 2 (y = 20) ~12, door 3 (x = 0) ~15.
+  targets[0].bias = 12.0;  // door 1 now costs ~13: door 2 is cheaper
+  auto choice = ChooseNearestFrontier(g, targets, {17, 10});
+  ASSERT_EQ(choice.status, PlanStatus::kFound);
+  EXPECT_EQ(choice.frontier_id, 2);
+  EXPECT_NEAR(choice.path.cost, core::Distance({17, 10}, targets[1].point), 1e-6) << "the path keeps its own cost";
+  targets[0].bias = 5.0;
+  EXPECT_EQ(ChooseNearestFrontier(g, targets, {17, 10}).frontier_id, 1);
+  // A team of one near door 3 and one near door 1, each door biased heavily: the assignment swaps them.
+  targets[0].bias = 0;
+  const auto plain = AssignFrontiers(g, targets, {{17, 10}, {3, 10}});
+  ASSERT_EQ(plain.size(), 2u);
+  EXPECT_EQ(plain[0].frontier_id, 1);
+  EXPECT_EQ(plain[1].frontier_id, 3);
+  targets[0].bias = 100;
+  targets[2].bias = 100;
+  const auto biased = AssignFrontiers(g, targets, {{17, 10}, {3, 10}});
+  std::set<int> ids{biased[0].frontier_id, biased[1].frontier_id};
+  EXPECT_TRUE(ids.count(2)) << "one agent takes the unbiased door 2";
+}
+
 TEST(Frontiers, TeamNeverSharesAFrontierWhileEnoughExist) {
   const auto view = ThreeDoorRoom();
   const VisibilityGraph g(view, {}, true);
