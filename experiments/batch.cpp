@@ -83,6 +83,7 @@ json RecordJson(const TrialId& id, const TrialResult* r, const std::string& erro
     t.num_agents = id.agents;
     t.max_steps = config.bench.max_steps;
     t.mcmc_every = config.bench.mcmc_every;
+    t.open_world_mcmc_every = config.bench.open_world_mcmc_every;
     std::string name = id.Key();
     std::replace(name.begin(), name.end(), '/', '_');
     std::unique_ptr<TrialVideo> video;

@@ -250,6 +250,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     b.Read("num_seeds", &c.bench.num_seeds, 0, 1000000);
     b.Read("max_steps", &c.bench.max_steps, 1, 100000);
     b.Read("mcmc_every", &c.bench.mcmc_every, 0, 100000);
+    b.Read("open_world_mcmc_every", &c.bench.open_world_mcmc_every, 1, 100000);
     b.Read("pictures", &c.bench.pictures);
     b.Read("videos", &c.bench.videos);
     b.Finish();

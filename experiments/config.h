@@ -37,6 +37,7 @@ struct BenchOptions {
   int num_seeds = 0;
   int max_steps = 400;
   int mcmc_every = 5;
+  int open_world_mcmc_every = 2;  // the cadence in open worlds (see TrialOptions)
   bool pictures = true;          // a final PNG per trial
   bool videos = false;           // an MP4 of every trial (videos/<row>_s<seed>.mp4; slow: one frame a step)
 };

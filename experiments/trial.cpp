@@ -139,6 +139,10 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   sim::MotionSim motion(world, config.motion);
   const bool open_world = !world.has_boundary();
   const double step_length = sim::StepLength(config.motion, world);
+  // MCMC cadence; open worlds spread the same proposals per step over more frequent calls.
+  const int mcmc_every = o.mcmc_every > 0 && open_world ? o.open_world_mcmc_every : o.mcmc_every;
+  const int mcmc_samples =
+      o.mcmc_every > 0 ? std::max(1, int(std::lround(double(mo.mcmc_samples) * mcmc_every / o.mcmc_every))) : 0;
   TrialResult r;
   r.seed = seed;
   r.num_agents = o.num_agents;
@@ -164,7 +168,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     const auto tk0 = Clock::now();
     for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(motion.Pose(a), a));
     const auto tk1 = Clock::now();
-    if (o.mcmc_every > 0 && (step % o.mcmc_every == 0)) mapper.SampleMostLikelyMap(rng);
+    if (mcmc_every > 0 && (step % mcmc_every == 0)) mapper.SampleMostLikelyMap(rng, mcmc_samples);
     const auto tk2 = Clock::now();
     view = mapper.View();
     const auto tk3 = Clock::now();

@@ -118,10 +118,10 @@ class Mapper {
   // that is not positive definite, or a pose outside options.world_bounds.
   void AddObservation(const core::Observation& observation);
 
-  // MCMC over vertex inclusion: options.mcmc_samples single-vertex flips of the recently seen candidates
-  // (random-order systematic scan), Metropolis acceptance; leaves the map at the most likely state seen and
+  // MCMC over vertex inclusion: 'samples' (negative: options.mcmc_samples) single-vertex flips of the recently
+  // seen candidates (random-order systematic scan), Metropolis acceptance; leaves the map at the most likely state seen and
   // returns how much that raised the log posterior (>= 0).
-  double SampleMostLikelyMap(core::Rng& rng);
+  double SampleMostLikelyMap(core::Rng& rng, int samples = -1);
 
   // The log posterior of the current map (all observations).
   double LogPosterior() const;

@@ -700,7 +700,7 @@ struct Mapper::Impl {
     return out;
   }
 
-  double Sample(core::Rng& rng) {
+  double Sample(core::Rng& rng, int samples) {
     RefreshStars(o.star_rebuild_tolerance);
     // Positions and star polygons stay put until the call returns: cache which vertices each star holds.
     struct CacheOff {
@@ -734,7 +734,7 @@ struct Mapper::Impl {
     // Random-order systematic scan: every candidate is proposed once per pass (in a fresh random order), so a
     // vertex that just gathered enough detections is considered at the next call, whatever the window size.
     std::vector<int> order;
-    for (int s = 0; s < o.mcmc_samples && !cand.empty(); ++s) {
+    for (int s = 0; s < samples && !cand.empty(); ++s) {
       if (order.empty()) {
         order = cand;
         rng.Shuffle(order);
@@ -1013,7 +1013,9 @@ Mapper::Mapper(const MapperOptions& options) : impl_(std::make_unique<Impl>()) {
 Mapper::~Mapper() = default;
 
 void Mapper::AddObservation(const core::Observation& z) { impl_->Add(z); }
-double Mapper::SampleMostLikelyMap(core::Rng& rng) { return impl_->Sample(rng); }
+double Mapper::SampleMostLikelyMap(core::Rng& rng, int samples) {
+  return impl_->Sample(rng, samples < 0 ? impl_->o.mcmc_samples : samples);
+}
 double Mapper::LogPosterior() const { return impl_->LogPosterior(); }
 const MapperOptions& Mapper::options() const { return impl_->o; }
 

@@ -35,6 +35,14 @@ TEST(Config, ValuesAreRead) {
   EXPECT_EQ(c.demo.seed, 12345u);
 }
 
+TEST(Config, OpenWorldMcmcCadenceIsReadAndChecked) {
+  EXPECT_EQ(ParseConfig("", "empty.yaml").bench.open_world_mcmc_every, 2);
+  const Config c = ParseConfig("bench:\n  mcmc_every: 5\n  open_world_mcmc_every: 1\n", "x.yaml");
+  EXPECT_EQ(c.bench.mcmc_every, 5);
+  EXPECT_EQ(c.bench.open_world_mcmc_every, 1);
+  EXPECT_EQ(ErrorOf("bench:\n  open_world_mcmc_every: 0\n").key(), "bench.open_world_mcmc_every");
+}
+
 TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   const Config c = ParseConfig(
       "search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  count_standing_only: false\n  unreachable_steps: 9\n"

@@ -92,6 +92,31 @@ TEST(Mapper, InjectedFalsePositivesAreRejectedAndPosteriorDoesNotDrop) {
   for (const auto& v : view.vertices) EXPECT_TRUE(std::abs(v.position.x - 5) > 4 && std::abs(v.position.y - 5) > 4);
 }
 
+TEST(Mapper, ACallFlipsAtMostTheProposalsItIsGiven) {
+  // The square room seen 12 times: its 4 corners are candidates that only MCMC brings into the map.
+  auto drive = [](Mapper& m) {
+    for (int i = 0; i < 12; ++i) {
+      const core::Pose2 pose{5 + 0.05 * i, 5, 0.0};
+      m.AddObservation(Obs(pose, SquareCorners(pose)));
+    }
+  };
+  core::Rng rng(3);
+  Mapper none(SquareOptions());
+  drive(none);
+  EXPECT_EQ(none.SampleMostLikelyMap(rng, 0), 0.0);
+  EXPECT_EQ(none.Stats().last_mcmc_accepted, 0);
+  EXPECT_TRUE(none.View().vertices.empty());
+  Mapper one(SquareOptions());
+  drive(one);
+  one.SampleMostLikelyMap(rng, 1);
+  EXPECT_EQ(one.Stats().last_mcmc_accepted, 1) << "adding a well-seen corner raises the posterior";
+  EXPECT_EQ(one.View().vertices.size(), 1u);
+  Mapper all(SquareOptions());
+  drive(all);
+  all.SampleMostLikelyMap(rng);  // options.mcmc_samples
+  EXPECT_EQ(all.View().vertices.size(), 4u);
+}
+
 // The square room seen from inside, each observation with one false detection somewhere on the wall y = 0
 // (a new place every time, so none gathers enough detections to become a map vertex).
 // 30 observations from poses drifting through the room (detections from 'seen'), MCMC every 5 and at the end.
