@@ -511,7 +511,7 @@ int main(int argc, char** argv) {
   trial->add_option("--max-steps", ta.trial.max_steps, "Step cap")->capture_default_str()->check(CLI::Range(1, 100000));
   trial->add_option("--mcmc-every", ta.trial.mcmc_every, "MCMC every this many steps (0: never)")->capture_default_str()->check(CLI::Range(0, 100000));
   trial->add_option("--open-world-mcmc-every", ta.trial.open_world_mcmc_every,
-                    "... in open worlds (office park), with the same proposals per step")
+                    "MCMC every this many steps in open worlds (office park), at the same proposals per step")
       ->capture_default_str()->check(CLI::Range(1, 100000));
   trial->add_option("--out", ta.out, "Output directory: trial.png")->capture_default_str();
   trial->add_option("--video", ta.video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
