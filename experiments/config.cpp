@@ -64,6 +64,8 @@ void ReadGuidedMaze(YamlSection s, sim::GuidedMazeOptions* o) {
 
 }  // namespace
 
+const char* ToString(FrontierOrder order) { return order == FrontierOrder::kTour ? "tour" : "nearest"; }
+
 void SearchOptions::Validate() const {
   auto fail = [](const char* key, double v, const char* why) {
     throw core::ConfigError("<options>", key, std::to_string(v), why);
@@ -230,6 +232,13 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("give_up_probe_radius", &o.give_up_probe_radius, 0.0, 100000.0);
     r.Read("give_up_in_part", &o.give_up_in_part);
     r.Read("depth_weight", &o.depth_weight, 0.0, 1000.0);
+    for (const auto& [key, order] : {std::pair{"order", &o.order}, std::pair{"open_world_order", &o.open_world_order}}) {
+      std::string name = ToString(*order);
+      r.Read(key, &name);
+      if (name == "nearest") *order = FrontierOrder::kNearest;
+      else if (name == "tour") *order = FrontierOrder::kTour;
+      else r.Fail(key, name, "unknown frontier order (nearest, tour)");
+    }
     r.Finish();
   }
   {

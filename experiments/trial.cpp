@@ -139,6 +139,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   sim::MotionSim motion(world, config.motion);
   const bool open_world = !world.has_boundary();
   const double step_length = sim::StepLength(config.motion, world);
+  const FrontierOrder order = open_world ? so.open_world_order : so.order;  // one agent's
   // MCMC cadence; open worlds spread the same proposals per step over more frequent calls.
   const int mcmc_every = o.mcmc_every > 0 && open_world ? o.open_world_mcmc_every : o.mcmc_every;
   const int mcmc_samples =
@@ -227,7 +228,9 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     std::vector<Vec2> agents;
     for (int a = 0; a < o.num_agents; ++a) agents.push_back(motion.Pose(a).position());
     std::vector<planning::FrontierChoice> choices =
-        o.num_agents == 1 ? std::vector<planning::FrontierChoice>{planning::ChooseNearestFrontier(graph, targets, agents[0])}
+        o.num_agents == 1 ? std::vector<planning::FrontierChoice>{order == FrontierOrder::kTour
+                                                                       ? planning::ChooseFrontierByTour(graph, targets, agents[0])
+                                                                       : planning::ChooseNearestFrontier(graph, targets, agents[0])}
                           : planning::AssignFrontiers(graph, targets, agents);
     // Commitment: an agent keeps heading for its previous frontier while it exists and costs at most a little
     // more than the new choice (switching back and forth between two frontiers wastes the whole trial).

@@ -402,6 +402,34 @@ FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::ve
   return choice;
 }
 
+FrontierChoice ChooseFrontierByTour(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
+                                    const Vec2& agent, int exact_max) {
+  FrontierChoice choice;
+  if (targets.empty()) return choice;
+  std::vector<Vec2> goals;
+  for (const auto& t : targets) goals.push_back(t.point);
+  const std::vector<Path> paths = graph.PlanToMany(agent, goals);
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> first(targets.size(), inf);
+  for (size_t k = 0; k < targets.size(); ++k)
+    if (paths[k]) first[k] = paths[k].cost + targets[k].bias;
+  choice.status = PlanStatus::kNoPath;
+  std::vector<std::vector<double>> between(targets.size(), std::vector<double>(targets.size(), inf));
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (!paths[i]) continue;
+    const std::vector<Path> from_i = graph.PlanToMany(goals[i], goals);
+    for (size_t j = 0; j < targets.size(); ++j)
+      if (from_i[j]) between[i][j] = from_i[j].cost + targets[j].bias;
+  }
+  const std::vector<int> tour = ShortestOpenTour(first, between, exact_max);
+  if (tour.empty()) return choice;
+  const size_t k = size_t(tour.front());
+  choice.status = PlanStatus::kFound;
+  choice.frontier_id = targets[k].frontier_id;
+  choice.path = paths[k];
+  return choice;
+}
+
 std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                             const std::vector<Vec2>& agents) {
   std::vector<FrontierChoice> out(agents.size());

@@ -100,6 +100,11 @@ struct FrontierChoice {
 FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                      const core::Vec2& agent);
 
+// Single agent: the first frontier of the shortest open tour from 'agent' through every reachable frontier
+// target (path costs between targets; biases added on arrival), exact up to 'exact_max' targets.
+FrontierChoice ChooseFrontierByTour(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
+                                    const core::Vec2& agent, int exact_max = 10);
+
 // A team: agents assigned to distinct frontiers minimizing the summed cost (path plus bias, Hungarian); when there are
 // fewer reachable frontiers than agents, the extra agents take their own cheapest frontier.
 std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,

@@ -43,6 +43,18 @@ TEST(Config, OpenWorldMcmcCadenceIsReadAndChecked) {
   EXPECT_EQ(ErrorOf("bench:\n  open_world_mcmc_every: 0\n").key(), "bench.open_world_mcmc_every");
 }
 
+TEST(Config, FrontierOrdersAreReadByNameAndUnknownNamesAreErrors) {
+  const Config d = ParseConfig("", "empty.yaml");
+  EXPECT_EQ(d.search.order, FrontierOrder::kNearest);
+  EXPECT_EQ(d.search.open_world_order, FrontierOrder::kNearest);
+  const Config c = ParseConfig("search:\n  order: tour\n  open_world_order: tour\n", "x.yaml");
+  EXPECT_EQ(c.search.order, FrontierOrder::kTour);
+  EXPECT_EQ(c.search.open_world_order, FrontierOrder::kTour);
+  const auto e = ErrorOf("search:\n  open_world_order: shortest\n");
+  EXPECT_EQ(e.key(), "search.open_world_order");
+  EXPECT_EQ(e.value(), "shortest");
+}
+
 TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   const Config c = ParseConfig(
       "search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  count_standing_only: false\n  unreachable_steps: 9\n"

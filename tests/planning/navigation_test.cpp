@@ -231,6 +231,21 @@ TEST(Frontiers, ATargetsBiasAddsToItsPathCostWhenChoosing) {
   EXPECT_TRUE(ids.count(2)) << "one agent takes the unbiased door 2";
 }
 
+TEST(Frontiers, TourOrderTakesTheFrontierThatStartsTheShortestTour) {
+  const auto view = ThreeDoorRoom();
+  const VisibilityGraph g(view, {}, true);
+  const auto targets = FrontierTargets(view, {});  // (18, 10), (10, 18), (2, 10)
+  // From (12, 15) door 2 is nearest (3.6), but door 1 (7.8) starts the shortest tour: 1, 2, 3 is 30.4 long,
+  // 2 first at least 30.9.
+  EXPECT_EQ(ChooseNearestFrontier(g, targets, {12, 15}).frontier_id, 2);
+  const auto tour = ChooseFrontierByTour(g, targets, {12, 15});
+  ASSERT_EQ(tour.status, PlanStatus::kFound);
+  EXPECT_EQ(tour.frontier_id, 1);
+  EXPECT_NEAR(tour.path.cost, core::Distance({12, 15}, targets[0].point), 1e-6);
+  EXPECT_EQ(ChooseFrontierByTour(g, {}, {12, 15}).status, PlanStatus::kNothingToExplore);
+  EXPECT_EQ(ChooseFrontierByTour(g, {targets[1]}, {12, 15}).frontier_id, 2) << "one target: that one";
+}
+
 TEST(Frontiers, TeamNeverSharesAFrontierWhileEnoughExist) {
   const auto view = ThreeDoorRoom();
   const VisibilityGraph g(view, {}, true);
