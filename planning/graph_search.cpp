@@ -127,14 +127,20 @@ std::vector<int> ShortestOpenTour(const std::vector<double>& from_start, const s
     double here_best = inf;
     size_t cur = 0;
     for (size_t i = 0; i < n; ++i)
-      if (from_start[size_t(nodes[i])] < here_best) here_best = from_start[size_t(nodes[i])], cur = i;
+      if (from_start[size_t(nodes[i])] < here_best) {
+        here_best = from_start[size_t(nodes[i])];
+        cur = i;
+      }
     order.push_back(cur);
     used[cur] = 1;
     for (size_t k = 1; k < n; ++k) {
       double bd = inf;
       size_t next = n;
       for (size_t j = 0; j < n; ++j)
-        if (!used[j] && d(cur, j) < bd) bd = d(cur, j), next = j;
+        if (!used[j] && d(cur, j) < bd) {
+          bd = d(cur, j);
+          next = j;
+        }
       if (next == n) break;
       order.push_back(next);
       used[next] = 1;
@@ -150,7 +156,7 @@ std::vector<int> ShortestOpenTour(const std::vector<double>& from_start, const s
                                 (b + 1 < order.size() ? d(at(b), at(b + 1)) : 0.0);
           const double after = (a == 0 ? from_start[size_t(nodes[at(b)])] : d(at(a - 1), at(b))) +
                                (b + 1 < order.size() ? d(at(a), at(b + 1)) : 0.0);
-          // Inner edges change direction: costs are symmetric for undirected paths.
+          // The reversed inner edges cost the same both ways (path lengths).
           if (after + 1e-9 < before) {
             std::reverse(order.begin() + long(a), order.begin() + long(b) + 1);
             better = true;

@@ -412,14 +412,14 @@ FrontierChoice ChooseFrontierByTour(const VisibilityGraph& graph, const std::vec
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> first(targets.size(), inf);
   for (size_t k = 0; k < targets.size(); ++k)
-    if (paths[k]) first[k] = paths[k].cost + targets[k].bias;
+    if (paths[k]) first[k] = paths[k].cost;
   choice.status = PlanStatus::kNoPath;
   std::vector<std::vector<double>> between(targets.size(), std::vector<double>(targets.size(), inf));
   for (size_t i = 0; i < targets.size(); ++i) {
     if (!paths[i]) continue;
     const std::vector<Path> from_i = graph.PlanToMany(goals[i], goals);
     for (size_t j = 0; j < targets.size(); ++j)
-      if (from_i[j]) between[i][j] = from_i[j].cost + targets[j].bias;
+      if (from_i[j]) between[i][j] = from_i[j].cost;
   }
   const std::vector<int> tour = ShortestOpenTour(first, between, exact_max);
   if (tour.empty()) return choice;

@@ -101,7 +101,8 @@ FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::ve
                                      const core::Vec2& agent);
 
 // Single agent: the first frontier of the shortest open tour from 'agent' through every reachable frontier
-// target (path costs between targets; biases added on arrival), exact up to 'exact_max' targets.
+// target (path costs between targets; a tour visits every target, so biases play no part), exact up to
+// 'exact_max' targets.
 FrontierChoice ChooseFrontierByTour(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                     const core::Vec2& agent, int exact_max = 10);
 
