@@ -227,11 +227,13 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
     const planning::VisibilityGraph graph(view, po, false);
     std::vector<Vec2> agents;
     for (int a = 0; a < o.num_agents; ++a) agents.push_back(motion.Pose(a).position());
-    std::vector<planning::FrontierChoice> choices =
-        o.num_agents == 1 ? std::vector<planning::FrontierChoice>{order == FrontierOrder::kTour
-                                                                       ? planning::ChooseFrontierByTour(graph, targets, agents[0])
-                                                                       : planning::ChooseNearestFrontier(graph, targets, agents[0])}
-                          : planning::AssignFrontiers(graph, targets, agents);
+    std::vector<planning::FrontierChoice> choices;
+    if (o.num_agents > 1)
+      choices = planning::AssignFrontiers(graph, targets, agents);
+    else if (order == FrontierOrder::kTour)
+      choices = {planning::ChooseFrontierByTour(graph, targets, agents[0])};
+    else
+      choices = {planning::ChooseNearestFrontier(graph, targets, agents[0])};
     // Commitment: an agent keeps heading for its previous frontier while it exists and costs at most a little
     // more than the new choice (switching back and forth between two frontiers wastes the whole trial).
     for (int a = 0; a < o.num_agents; ++a) {

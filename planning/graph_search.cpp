@@ -71,8 +71,8 @@ std::vector<double> ShortestCosts(const Graph& graph, int source) {
   return dist;
 }
 
-std::vector<int> ShortestOpenTour(const std::vector<double>& from_start, const std::vector<std::vector<double>>& between,
-                                  int exact_max) {
+std::vector<int> ShortestOpenTour(const std::vector<double>& from_start,
+                                  const std::vector<std::vector<double>>& between, int exact_max) {
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<int> nodes;
   for (size_t i = 0; i < from_start.size(); ++i)

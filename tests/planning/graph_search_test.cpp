@@ -38,7 +38,8 @@ TEST(ShortestPath, RejectsNegativeCostsAndUnknownNodes) {
 }
 
 // Points on a line: the start at 0, nodes at 'xs'; costs are distances (infinity to and from 'cut').
-void LineCosts(const std::vector<double>& xs, int cut, std::vector<double>* first, std::vector<std::vector<double>>* between) {
+void LineCosts(const std::vector<double>& xs, int cut, std::vector<double>* first,
+               std::vector<std::vector<double>>* between) {
   const double inf = std::numeric_limits<double>::infinity();
   first->clear();
   between->assign(xs.size(), std::vector<double>(xs.size(), inf));
