@@ -232,12 +232,14 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("give_up_probe_radius", &o.give_up_probe_radius, 0.0, 100000.0);
     r.Read("give_up_in_part", &o.give_up_in_part);
     r.Read("depth_weight", &o.depth_weight, 0.0, 1000.0);
-    for (const auto& [key, order] : {std::pair{"order", &o.order}, std::pair{"open_world_order", &o.open_world_order}}) {
+    for (const auto& [key, order] :
+         {std::pair{"order", &o.order}, std::pair{"open_world_order", &o.open_world_order}}) {
       std::string name = ToString(*order);
       r.Read(key, &name);
-      if (name == "nearest") *order = FrontierOrder::kNearest;
-      else if (name == "tour") *order = FrontierOrder::kTour;
-      else r.Fail(key, name, "unknown frontier order (nearest, tour)");
+      bool known = false;
+      for (const FrontierOrder v : {FrontierOrder::kNearest, FrontierOrder::kTour})
+        if (name == ToString(v)) *order = v, known = true;
+      if (!known) r.Fail(key, name, "unknown frontier order (nearest, tour)");
     }
     r.Finish();
   }

@@ -119,8 +119,8 @@ class Mapper {
   void AddObservation(const core::Observation& observation);
 
   // MCMC over vertex inclusion: 'samples' (negative: options.mcmc_samples) single-vertex flips of the recently
-  // seen candidates (random-order systematic scan), Metropolis acceptance; leaves the map at the most likely state seen and
-  // returns how much that raised the log posterior (>= 0).
+  // seen candidates (random-order systematic scan), Metropolis acceptance; leaves the map at the most likely
+  // state seen and returns how much that raised the log posterior (>= 0).
   double SampleMostLikelyMap(core::Rng& rng, int samples = -1);
 
   // The log posterior of the current map (all observations).

@@ -106,8 +106,8 @@ FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::ve
 FrontierChoice ChooseFrontierByTour(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                     const core::Vec2& agent, int exact_max = 10);
 
-// A team: agents assigned to distinct frontiers minimizing the summed cost (path plus bias, Hungarian); when there are
-// fewer reachable frontiers than agents, the extra agents take their own cheapest frontier.
+// A team: agents assigned to distinct frontiers minimizing the summed cost (path plus bias, Hungarian); when
+// there are fewer reachable frontiers than agents, the extra agents take their own cheapest frontier.
 std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                             const std::vector<core::Vec2>& agents);
 
