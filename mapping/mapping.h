@@ -86,6 +86,9 @@ struct Frontier {
   std::vector<core::Vec2> points;   // polyline along the known-space boundary
   core::Vec2 midpoint;              // the point halfway along it
   double length = 0.0;
+  // Where a longer chain was cut at a turn (MapperOptions::frontier_split_angle) rather than ending at a corner
+  // of known space: how sharply it turns at that end (radians between the two pieces' chords); 0: a true end.
+  double front_turn = 0.0, back_turn = 0.0;
 };
 
 struct MapView {

@@ -964,9 +964,24 @@ struct Mapper::Impl {
     // and the extra pieces left single agents zigzagging between them.)
     if (o.frontier_split_angle > 0 && !o.open_region) {
       std::vector<Frontier> split;
-      for (const auto& f : out)
-        for (auto& piece : SplitAtTurns(f.points, o.frontier_split_angle, o.frontier_split_min_length))
-          split.push_back({0, std::move(piece), {}, 0.0});
+      for (const auto& f : out) {
+        const bool ring = f.points.size() > 3 && f.points.front() == f.points.back();
+        const auto pieces = SplitAtTurns(f.points, o.frontier_split_angle, o.frontier_split_min_length);
+        auto chord = [&](size_t k) { return pieces[k].back() - pieces[k].front(); };
+        auto turn = [&](size_t k0, size_t k1) {  // from piece k0 into piece k1
+          const Vec2 d0 = chord(k0), d1 = chord(k1);
+          return std::max(1e-9, std::abs(std::atan2(core::Cross(d0, d1), core::Dot(d0, d1))));
+        };
+        const size_t m = pieces.size();
+        for (size_t k = 0; k < m; ++k) {
+          Frontier piece;
+          if (k > 0 || (ring && m > 1)) piece.front_turn = turn((k + m - 1) % m, k);
+          if (k + 1 < m || (ring && m > 1)) piece.back_turn = turn(k, (k + 1) % m);
+          if (ring && m == 1) piece.front_turn = piece.back_turn = core::kPi;  // a whole ring has no ends
+          piece.points = pieces[k];
+          split.push_back(std::move(piece));
+        }
+      }
       out = std::move(split);
     }
     for (auto& f : out) {

@@ -220,13 +220,19 @@ bool AlongVertexRow(const mapping::Frontier& f, const mapping::MapView& view, co
   if (length < 1e-9) return false;
   for (const auto& p : f.points)
     if (core::DistanceToSegment(p, {a, b}) > tol) return false;  // bent: not a straight wall
-  // Where the detected vertices next to the chord lie along it, with both ends counted.
+  // Where the detected vertices next to the chord lie along it, with both ends counted -- but not an end where a
+  // chain was cut at a gentle turn (an opening that goes on round the turn) unless a detected vertex sits there.
+  // (A sharp one, a notch in known space, bounds it like a vertex.)
   const Vec2 u = (b - a) / length;
-  std::vector<double> along{0.0, length};
+  auto bounded = [](double turn) { return turn == 0.0 || turn >= core::kPi / 2; };
+  std::vector<double> along;
+  if (bounded(f.front_turn)) along.push_back(0.0);
+  if (bounded(f.back_turn)) along.push_back(length);
   for (const auto* list : {&view.vertices, &view.rejected})
     for (const auto& v : *list)
       if (core::DistanceToSegment(v.position, {a, b}) <= tol) along.push_back(core::Dot(v.position - a, u));
   std::sort(along.begin(), along.end());
+  if (along.empty() || along.front() > tol || along.back() < length - tol) return false;
   for (size_t i = 1; i < along.size(); ++i)
     if (along[i] - along[i - 1] > options.frontier_row_gap) return false;
   return true;

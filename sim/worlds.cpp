@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "sim/internal/grid_polygon.h"
+#include "sim/internal/labyrinth_rooms.h"
 
 namespace toponav::sim {
 
@@ -73,15 +74,8 @@ void PlaceStartAndGoal(World& w, Rng& rng, double clearance) {
 
 // ---------------------------------------------------------------- labyrinth
 
-struct Room {
-  int x0, y0, w, h;  // covers cells x0..x0+w, y0..y0+h (inclusive)
-};
-
-double RoomGap(const Room& a, const Room& b) {
-  const double gx = std::max({0.0, double(b.x0 - (a.x0 + a.w + 1)), double(a.x0 - (b.x0 + b.w + 1))});
-  const double gy = std::max({0.0, double(b.y0 - (a.y0 + a.h + 1)), double(a.y0 - (b.y0 + b.h + 1))});
-  return std::hypot(gx, gy);
-}
+using internal::GridRoom;
+using internal::RoomGap;
 
 bool ValidLabyrinthGrid(const LabyrinthOptions& o, const std::vector<char>& g) {
   const int n = o.grid_cells;
@@ -105,17 +99,19 @@ bool ValidLabyrinthGrid(const LabyrinthOptions& o, const std::vector<char>& g) {
 std::vector<char> LabyrinthGrid(const LabyrinthOptions& o, Rng& rng) {
   const int n = o.grid_cells;
   for (int attempt = 0; attempt < 100000; ++attempt) {
-    std::vector<Room> rooms;
-    for (int tries = 0; int(rooms.size()) < o.num_rooms && tries < 1000; ++tries) {
-      Room r{0, 0, rng.UniformInt(o.room_min_cells - 1, o.room_max_cells - 1),
+    // All rooms at once, the set redrawn if any two come within room_separation_cells.
+    std::vector<GridRoom> rooms;
+    for (int i = 0; i < o.num_rooms; ++i) {
+      GridRoom r{0, 0, rng.UniformInt(o.room_min_cells - 1, o.room_max_cells - 1),
              rng.UniformInt(o.room_min_cells - 1, o.room_max_cells - 1)};
       r.x0 = rng.UniformInt(0, n - 1 - r.w);
       r.y0 = rng.UniformInt(0, n - 1 - r.h);
-      bool ok = true;
-      for (const auto& q : rooms) ok = ok && RoomGap(r, q) >= o.room_separation_cells;
-      if (ok) rooms.push_back(r);
+      rooms.push_back(r);
     }
-    if (int(rooms.size()) < o.num_rooms) continue;
+    bool apart = true;
+    for (size_t i = 0; i < rooms.size(); ++i)
+      for (size_t j = i + 1; j < rooms.size(); ++j) apart = apart && RoomGap(rooms[i], rooms[j]) > o.room_separation_cells;
+    if (!apart) continue;
     // One of four connection patterns (vertexnav.md §5.2), generalised to any room count >= 2.
     std::vector<std::pair<int, int>> links;
     const int k = o.num_rooms;
@@ -139,10 +135,11 @@ std::vector<char> LabyrinthGrid(const LabyrinthOptions& o, Rng& rng) {
         for (int x = r.x0; x <= r.x0 + r.w; ++x) g[size_t(y) * n + x] = 1;
     bool ok = true;
     for (const auto& [i, j] : links) {
-      const Room& a = rooms[size_t(i)];
-      const Room& b = rooms[size_t(j)];
-      const int ax = rng.UniformInt(a.x0, a.x0 + a.w), ay = rng.UniformInt(a.y0, a.y0 + a.h);
-      const int bx = rng.UniformInt(b.x0, b.x0 + b.w), by = rng.UniformInt(b.y0, b.y0 + b.h);
+      const GridRoom& a = rooms[size_t(i)];
+      const GridRoom& b = rooms[size_t(j)];
+      // From an interior cell of each room (not on its edge).
+      const int ax = rng.UniformInt(a.x0 + 1, a.x0 + a.w - 1), ay = rng.UniformInt(a.y0 + 1, a.y0 + a.h - 1);
+      const int bx = rng.UniformInt(b.x0 + 1, b.x0 + b.w - 1), by = rng.UniformInt(b.y0 + 1, b.y0 + b.h - 1);
       if (std::abs(ax - bx) > o.max_corridor_offset_cells || std::abs(ay - by) > o.max_corridor_offset_cells) {
         ok = false;
         break;
@@ -246,8 +243,8 @@ std::vector<Ring> PlaceBuildings(const OfficeParkOptions& o, Rng& rng) {
 void WorldOptions::Validate() const {
   const auto& l = labyrinth;
   Require(l.num_rooms >= 2 && l.num_rooms <= 12, "labyrinth.num_rooms", l.num_rooms, "must be in [2, 12]");
-  Require(l.room_min_cells >= 2 && l.room_min_cells <= l.room_max_cells, "labyrinth.room_min_cells",
-          l.room_min_cells, "must be >= 2 and <= room_max_cells");
+  Require(l.room_min_cells >= 3 && l.room_min_cells <= l.room_max_cells, "labyrinth.room_min_cells",
+          l.room_min_cells, "must be >= 3 (a room has an interior cell) and <= room_max_cells");
   Require(l.grid_cells >= 2 * l.room_max_cells + 3 && l.grid_cells <= 64, "labyrinth.grid_cells", l.grid_cells,
           "must be in [2*room_max_cells+3, 64]");
   Require(l.hall_width > 0 && l.hall_width <= 1000, "labyrinth.hall_width", l.hall_width, "must be in (0, 1000]");
@@ -478,3 +475,13 @@ World GenerateWorld(core::WorldKind kind, const WorldOptions& options, uint64_t 
 }
 
 }  // namespace toponav::sim
+
+namespace toponav::sim::internal {
+
+double RoomGap(const GridRoom& a, const GridRoom& b) {
+  const double gx = std::max({0.0, double(b.x0 - (a.x0 + a.w)), double(a.x0 - (b.x0 + b.w))});
+  const double gy = std::max({0.0, double(b.y0 - (a.y0 + a.h)), double(a.y0 - (b.y0 + b.h))});
+  return gx + gy;
+}
+
+}  // namespace toponav::sim::internal

@@ -13,7 +13,8 @@ struct LabyrinthOptions {
   int grid_cells = 18;             // the room grid is grid_cells x grid_cells cells
   int room_min_cells = 3;          // rooms span room_min_cells..room_max_cells cells per side
   int room_max_cells = 4;
-  double room_separation_cells = 2.05;  // rooms closer than this (in cells) are resampled
+  double room_separation_cells = 2.05;  // a room set with two rooms this close is redrawn (cells between the
+                                        // rooms' edge-cell centres; on a diagonal, the sum over both axes)
   int max_corridor_offset_cells = 6;    // a connection spanning more cells on either axis is rejected
   int max_straight_run_cells = 11;      // maps with a longer straight run of free cells are rejected
   double hall_width = 20.0;             // corridor width in world units

@@ -430,6 +430,14 @@ TEST(Mapper, FrontierIsSplitWhereItTurnsSharply) {
   bool between_a_b = false;
   for (const auto& f : split) between_a_b = between_a_b || core::Distance(f.midpoint, {5, 5}) < 0.5;
   EXPECT_TRUE(between_a_b);
+  // Every end of a piece is a cut, and records how sharply the ring turns there (90 degrees at B, 135 at A and C);
+  // the unsplit ring's ends are not cuts.
+  for (const auto& f : split) {
+    EXPECT_GT(f.front_turn, 1.5);
+    EXPECT_GT(f.back_turn, 1.5);
+  }
+  EXPECT_EQ(whole[0].front_turn, 0.0);
+  EXPECT_EQ(whole[0].back_turn, 0.0);
 }
 
 // Open ground far from every vertex is where an open-world search ends, not a frontier (open_frontier_reach).

@@ -140,6 +140,24 @@ TEST(Frontiers, AStraightFrontierAlongCloseDetectedVerticesIsAWall) {
   EXPECT_EQ(FrontierTargets(chord(12), off).size(), 1u);
 }
 
+// A frontier cut from a longer chain where it turns gently ends where the opening goes on round the turn: that
+// end bounds no row of vertices (a corridor mouth cut into short pieces at a bend keeps its targets).
+TEST(Frontiers, AnEndCutAtAGentleTurnBoundsNoRow) {
+  const PlannerOptions o;  // gaps up to 14
+  auto piece = [](double front_turn) {  // 12 long, a vertex at its back end only
+    auto v = View({{12, 20}}, {}, {testing::Rect(0, 0, 12, 20)});
+    v.frontiers = {{1, {{0, 20}, {12, 20}}, {6, 20}, 12}};
+    v.frontiers[0].front_turn = front_turn;
+    return v;
+  };
+  EXPECT_TRUE(FrontierTargets(piece(0.0), o).empty()) << "a true end: a chord shorter than the gap";
+  EXPECT_EQ(FrontierTargets(piece(0.5), o).size(), 1u) << "a gentle turn";
+  EXPECT_TRUE(FrontierTargets(piece(2.0), o).empty()) << "a sharp turn (a notch in known space) bounds it";
+  auto at_candidate = piece(0.5);
+  at_candidate.rejected.push_back({99, {0.0, 20.0}, {}, 3});
+  EXPECT_TRUE(FrontierTargets(at_candidate, o).empty()) << "a detected vertex at the cut bounds it";
+}
+
 TEST(Frontiers, TheTargetOfAPartlyProbedFrontierIsTheMiddleOfItsLongestUnprobedStretch) {
   const auto view = RoomWithAnOpenTop({});  // frontier y = 20, x in [0, 40]
   const PlannerOptions o;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "sim/internal/labyrinth_rooms.h"
 #include "sim/world_io.h"
 
 namespace toponav::sim {
@@ -46,6 +47,21 @@ double FreeWidth(const core::World& w, core::Vec2 p, core::Vec2 axis) {
     return t;
   };
   return reach(axis) + reach(axis * -1.0);
+}
+
+// Rooms are as far apart as the reference's: two empty cells between them on one axis are enough (their edge
+// cells' centres 3 apart, past 2.05), one is not; on a diagonal the two axes' gaps add up.
+TEST(Labyrinth, RoomsTwoEmptyCellsApartAreFarEnough) {
+  using internal::GridRoom;
+  using internal::RoomGap;
+  const LabyrinthOptions o;
+  const GridRoom a{0, 0, 2, 2};  // cells 0..2
+  EXPECT_GT(RoomGap(a, {5, 0, 2, 2}), o.room_separation_cells) << "cells 3 and 4 empty";
+  EXPECT_LE(RoomGap(a, {4, 1, 3, 2}), o.room_separation_cells) << "cell 3 empty";
+  EXPECT_LE(RoomGap(a, {3, 3, 2, 2}), o.room_separation_cells) << "corner cells touching diagonally";
+  EXPECT_GT(RoomGap(a, {3, 4, 2, 2}), o.room_separation_cells) << "diagonal, one empty row between";
+  EXPECT_EQ(RoomGap(a, {1, 1, 3, 3}), 0.0) << "overlapping";
+  EXPECT_EQ(RoomGap(a, {5, 0, 2, 2}), RoomGap({5, 0, 2, 2}, a));
 }
 
 TEST(Labyrinth, CorridorsAreHallWidthWide) {
