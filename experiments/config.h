@@ -42,12 +42,12 @@ struct BenchOptions {
   bool videos = false;           // an MP4 of every trial (videos/<row>_s<seed>.mp4; slow: one frame a step)
 };
 
-// How agents search in a trial (the trial loop's policy): YAML section `search:`.
 // How a single agent picks its next frontier: the nearest (by path cost), or the first of the shortest open
 // tour through all reachable frontier targets.
 enum class FrontierOrder { kNearest, kTour };
 const char* ToString(FrontierOrder order);
 
+// How agents search in a trial (the trial loop's policy): YAML section `search:`.
 struct SearchOptions {
   // One agent's frontier order indoors and in open worlds.  Tuning seeds: in the office park, where the
   // frontiers (building faces seen from afar) are known long before the agent gets there, the tour saves

@@ -1,10 +1,10 @@
 #include "experiments/trial.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
-#include <cmath>
 #include <limits>
 #include <map>
 #include <set>
