@@ -1,5 +1,6 @@
 # Fails on an upward or sideways include between layers.  Allowed: core <- sim, mapping <- planning <-
-# experiments; learning <- sim.  Usage: cmake -DSOURCE_DIR=<dir> -P check_layering.cmake
+# experiments; learning <- sim; in experiments only the sensor factory (and the CLI) includes learning.
+# Usage: cmake -DSOURCE_DIR=<dir> -P check_layering.cmake
 set(forbidden_core "sim|mapping|planning|learning|experiments")
 set(forbidden_sim "mapping|planning|learning|experiments")
 set(forbidden_mapping "sim|planning|learning|experiments")
@@ -14,6 +15,17 @@ foreach(layer core sim mapping planning learning)
       list(APPEND bad "${f}: ${lines}")
     endif()
   endforeach()
+endforeach()
+# The experiments layer reaches learning only through its sensor factory (and the CLI's `info`).
+file(GLOB_RECURSE files "${SOURCE_DIR}/experiments/*.h" "${SOURCE_DIR}/experiments/*.cpp")
+foreach(f ${files})
+  if(f MATCHES "/experiments/(sensor_factory\\.cpp|main\\.cpp)$")
+    continue()
+  endif()
+  file(STRINGS "${f}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"learning/")
+  if(lines)
+    list(APPEND bad "${f}: ${lines} (only experiments/sensor_factory.cpp may include the learning layer)")
+  endif()
 endforeach()
 if(bad)
   list(JOIN bad "\n  " msg)

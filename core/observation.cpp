@@ -27,4 +27,10 @@ Cov2 DetectionCovariance(const Pose2& pose, const Detection& d) {
   return out;
 }
 
+Vec2 GoalInAgentFrame(const Pose2& pose, const Vec2& goal) {
+  const Vec2 d = goal - pose.position();
+  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+  return {c * d.x + s * d.y, -s * d.x + c * d.y};
+}
+
 }  // namespace toponav::core

@@ -1,11 +1,15 @@
 #pragma once
-// What a vertex sensor reports, and the interface every sensor (noisy ground truth, learned CNN) implements,
-// so the trial loop does not care which one is behind it.
+// What a vertex sensor reports, and the interfaces behind it: a pose-in sensor (the one the agent loop
+// calls: the noisy ground-truth sensor, or a renderer composed with an image detector) and an image detector
+// (the learned CNN, a recorded folder's), so the loop does not care which one is behind it.
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/detection.h"
 #include "core/geometry.h"
+#include "core/image.h"
 
 namespace toponav::core {
 
@@ -29,10 +33,25 @@ struct Detection {
   LabelProbs labels{0.25, 0.25, 0.25, 0.25};
 };
 
+// Per-cell outputs a network returns beside the vertices, on its range-bearing grid: cell (r, b) covers
+// ranges [r, r+1) * max_range / rows and bearing ColumnToBearing(b, cols); values are row-major with the
+// channels innermost (index (r * cols + b) * channels + c).  Empty for sensors without such outputs.
+struct CellGrid {
+  int rows = 0, cols = 0;
+  double max_range = 0.0;
+  std::vector<std::string> channels;  // what each channel holds (e.g. frontier properties)
+  std::vector<float> values;
+  bool empty() const { return values.empty(); }
+  float at(int row, int col, int channel) const {
+    return values[(size_t(row) * size_t(cols) + size_t(col)) * channels.size() + size_t(channel)];
+  }
+};
+
 struct Observation {
   Pose2 pose;                        // where the agent was (world frame)
   int agent = 0;                     // which agent observed
   std::vector<Detection> detections; // sorted by ascending bearing
+  CellGrid cells;                    // per-cell extras (empty unless the sensor provides them)
 };
 
 // World position of a detection seen from 'pose'.
@@ -40,11 +59,32 @@ Vec2 DetectionPosition(const Pose2& pose, const Detection& d);
 // First-order world covariance of a detection: eigenvalues are var(range) and range^2 * var(bearing).
 Cov2 DetectionCovariance(const Pose2& pose, const Detection& d);
 
+// A pose-in sensor: what the agent loop calls every step for every agent.
 class VertexSensorInterface {
  public:
   virtual ~VertexSensorInterface() = default;
   // The observation an agent at 'pose' makes (detections sorted by bearing).
   virtual Observation Observe(const Pose2& pose, int agent) = 0;
+};
+
+// What an image detector may use beside the image: where the image was taken (to stamp the observation; a
+// detector must not use it to look at the world) and, for goal-conditioned networks, the goal relative to
+// the agent.
+struct DetectionContext {
+  Pose2 pose;
+  int agent = 0;
+  std::optional<Vec2> goal;  // in the agent's frame (x along its heading, y to its left); none: no goal
+};
+// The goal in the frame of an agent at 'pose'.
+Vec2 GoalInAgentFrame(const Pose2& pose, const Vec2& goal);
+
+// Finds vertices in a panorama.  Composed with a renderer (sim::CreateRenderingSensor) it is a pose-in
+// sensor; fed from a folder of recorded images it maps a real robot's run.
+class VertexDetectorInterface {
+ public:
+  virtual ~VertexDetectorInterface() = default;
+  // The observation in 'image' (detections sorted by bearing), stamped with context.pose and context.agent.
+  virtual Observation Detect(const Panorama& image, const DetectionContext& context) = 0;
 };
 
 }  // namespace toponav::core

@@ -1,5 +1,8 @@
 #include "experiments/config.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -64,15 +67,12 @@ void ReadGuidedMaze(YamlSection s, sim::GuidedMazeOptions* o) {
 
 }  // namespace
 
-const char* ToString(FrontierOrder order) { return order == FrontierOrder::kTour ? "tour" : "nearest"; }
-
 void SearchOptions::Validate() const {
   auto fail = [](const char* key, double v, const char* why) {
     throw core::ConfigError("<options>", key, std::to_string(v), why);
   };
   if (stuck_steps < 1) fail("search.stuck_steps", stuck_steps, "must be >= 1");
   if (unreachable_steps < 1) fail("search.unreachable_steps", unreachable_steps, "must be >= 1");
-  if (!(depth_weight >= 0)) fail("search.depth_weight", depth_weight, "must be >= 0");
   if (!(success_iou >= 0 && success_iou <= 1)) fail("search.success_iou", success_iou, "must be in [0, 1]");
   if (!(switch_ratio >= 1)) fail("search.switch_ratio", switch_ratio, "must be >= 1");
   if (!(switch_margin >= 0)) fail("search.switch_margin", switch_margin, "must be >= 0");
@@ -83,6 +83,25 @@ void SearchOptions::Validate() const {
   if (!(give_up_probe_radius >= 0)) fail("search.give_up_probe_radius", give_up_probe_radius, "must be >= 0");
 }
 
+namespace {
+
+// Rules that tie keys of different sections together (each names the key to change).
+void ValidateAcrossSections(const Config& c) {
+  // A split must not cut a frontier into pieces the planner ignores (an opening would vanish).
+  if (c.mapping.frontier_split_min_length < c.planning.frontier_min_length)
+    throw core::ConfigError(c.source, "mapping.frontier_split_min_length", std::to_string(c.mapping.frontier_split_min_length),
+                            "must be >= planning.frontier_min_length (" + std::to_string(c.planning.frontier_min_length) + ")");
+  // Paths keep the agent's body off map walls, and stay below the inflation radius so the graph's nodes
+  // (inflation_radius from each vertex) keep room to connect.
+  const double lo = c.motion.agent_radius + 0.25, hi = 0.9 * c.planning.inflation_radius;
+  if (c.planning.clearance < lo || c.planning.clearance > hi)
+    throw core::ConfigError(c.source, "planning.clearance", std::to_string(c.planning.clearance),
+                            "must be in [motion.agent_radius + 0.25, 0.9 * planning.inflation_radius] = [" +
+                                std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+}  // namespace
+
 void Validate(const Config& c) {
   try {
     c.worlds.Validate();
@@ -90,23 +109,15 @@ void Validate(const Config& c) {
     throw core::ConfigError(c.source, "worlds." + e.key(), e.value(), e.problem());
   }
   for (auto validate : {+[](const Config& x) { x.sensor.Validate(); }, +[](const Config& x) { x.mapping.Validate(); },
-                        +[](const Config& x) { x.planning.Validate(); }, +[](const Config& x) { x.search.Validate(); }}) {
+                        +[](const Config& x) { x.planning.Validate(); }, +[](const Config& x) { x.search.Validate(); },
+                        +[](const Config& x) { x.render.Validate(); }, +[](const Config& x) { x.motion.Validate(); }}) {
     try {
       validate(c);
     } catch (const core::ConfigError& e) {
       throw core::ConfigError(c.source, e.key(), e.value(), e.problem());
     }
   }
-  try {
-    c.render.Validate();
-  } catch (const core::ConfigError& e) {
-    throw core::ConfigError(c.source, e.key(), e.value(), e.problem());
-  }
-  try {
-    c.motion.Validate();
-  } catch (const core::ConfigError& e) {
-    throw core::ConfigError(c.source, e.key(), e.value(), e.problem());
-  }
+  ValidateAcrossSections(c);
   if (c.demo.kinds.empty()) throw core::ConfigError(c.source, "demo.kinds", "[]", "list at least one world kind");
   for (auto k : c.demo.kinds)
     if (k == core::WorldKind::kCustom)
@@ -154,7 +165,12 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   }
   {
     YamlSection r = top.Section("sensor");
-    auto& o = c.sensor;
+    std::string kind = ToString(c.sensor.kind);
+    r.Read("kind", &kind);
+    const auto k = ParseSensorKind(kind);
+    if (!k) r.Fail("kind", kind, "unknown sensor kind (known: " + fmt::format("{}", fmt::join(SensorKindNames(), ", ")) + ")");
+    c.sensor.kind = *k;
+    auto& o = c.sensor.noisy;
     r.Read("max_range", &o.max_range, 1.0, 1e4);
     r.Read("range_bins", &o.range_bins, 0, 1024);
     r.Read("bearing_bins", &o.bearing_bins, 0, 4096);
@@ -212,7 +228,6 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     pl.Read("frontier_min_length", &c.planning.frontier_min_length, 0.0, 1000.0);
     pl.Read("frontier_setback", &c.planning.frontier_setback, 0.01, 100.0);
     pl.Read("frontier_row_gap", &c.planning.frontier_row_gap, 0.0, 1000.0);
-    pl.Read("frontier_target_clearance", &c.planning.frontier_target_clearance, 0.0, 1000.0);
     pl.Read("frontier_row_tolerance", &c.planning.frontier_row_tolerance, 0.01, 100.0);
     pl.Finish();
   }
@@ -227,20 +242,8 @@ Config ParseConfig(const std::string& text, const std::string& source) {
     r.Read("give_up_distance", &o.give_up_distance, 0.01, 1000.0);
     r.Read("give_up_steps", &o.give_up_steps, 1, 100000);
     r.Read("push_distance", &o.push_distance, 0.0, 1000.0);
-    r.Read("count_standing_only", &o.count_standing_only);
     r.Read("give_up_reach", &o.give_up_reach, 0.0, 1000.0);
     r.Read("give_up_probe_radius", &o.give_up_probe_radius, 0.0, 100000.0);
-    r.Read("give_up_in_part", &o.give_up_in_part);
-    r.Read("depth_weight", &o.depth_weight, 0.0, 1000.0);
-    for (const auto& [key, order] :
-         {std::pair{"order", &o.order}, std::pair{"open_world_order", &o.open_world_order}}) {
-      std::string name = ToString(*order);
-      r.Read(key, &name);
-      bool known = false;
-      for (const FrontierOrder v : {FrontierOrder::kNearest, FrontierOrder::kTour})
-        if (name == ToString(v)) *order = v, known = true;
-      if (!known) r.Fail(key, name, "unknown frontier order (nearest, tour)");
-    }
     r.Finish();
   }
   {

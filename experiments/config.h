@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "core/world.h"
+#include "experiments/sensor_factory.h"
 #include "mapping/mapping.h"
 #include "planning/navigation.h"
 #include "sim/motion.h"
-#include "sim/noisy_sensor.h"
 #include "sim/render.h"
 #include "sim/worlds.h"
 
@@ -42,19 +42,8 @@ struct BenchOptions {
   bool videos = false;           // an MP4 of every trial (videos/<row>_s<seed>.mp4; slow: one frame a step)
 };
 
-// How a single agent picks its next frontier: the nearest (by path cost), or the first of the shortest open
-// tour through all reachable frontier targets.
-enum class FrontierOrder { kNearest, kTour };
-const char* ToString(FrontierOrder order);
-
 // How agents search in a trial (the trial loop's policy): YAML section `search:`.
 struct SearchOptions {
-  // One agent's frontier order indoors and in open worlds.  Tuning seeds: in the office park, where the
-  // frontiers (building faces seen from afar) are known long before the agent gets there, the tour saves
-  // ~5 % of steps but lost IoU (more searches ended with a building the map saw through); in the labyrinth,
-  // where a frontier hides a whole wing, it does not pay (README).  So both stay nearest.
-  FrontierOrder order = FrontierOrder::kNearest;
-  FrontierOrder open_world_order = FrontierOrder::kNearest;
   int stuck_steps = 6;            // an agent that moved less than a tenth of a step this many steps is nudged
   int unreachable_steps = 12;     // frontiers left but none reachable this many steps in a row: explored
   double success_iou = 0.95;      // success: explored and IoU above this (the paper's criterion)
@@ -65,19 +54,11 @@ struct SearchOptions {
                                   // (after half of them its target is pushed push_distance into unknown
                                   // space); a step in which an agent heading for it is stuck counts as well
   double push_distance = 6.0;
-  bool count_standing_only = true;  // only an agent that stands next to a frontier counts toward giving it up
   double give_up_reach = 3.0;     // a new frontier lying this close to a given-up one (middle and ends) is
                                   // given up (the map re-creates the same unmapped wall piece under a new
                                   // id); 0: off
   double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
                                        // stood (0: all of it)
-  double depth_weight = 0.0;      // a frontier's cost counts this much of the depth of the search region behind it
-                                  // (from its target along its outward normal to the region's bounds): shallow
-                                  // ones first, so a search does not leave a pocket behind; 0: off
-  bool give_up_in_part = false;   // a frontier agents could not get to is given up only around its target while
-                                  // the rest of it is at least planning.frontier_min_length long: its target
-                                  // moves to the middle of the longest stretch farther than give_up_reach from
-                                  // where frontiers were probed (one agents stood next to is given up whole)
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };
 
@@ -91,7 +72,7 @@ struct Config {
   sim::WorldOptions worlds;
   sim::MotionOptions motion;
   sim::RenderOptions render;
-  sim::NoisySensorOptions sensor;
+  SensorConfig sensor;
   mapping::MapperOptions mapping;
   planning::PlannerOptions planning;
   SearchOptions search;

@@ -1,12 +1,9 @@
 #include "experiments/map_drive.h"
 
-#include <chrono>
 #include <limits>
 
 #include "core/error.h"
-#include "core/rng.h"
-#include "sim/motion.h"
-#include "sim/noisy_sensor.h"
+#include "experiments/agent_loop.h"
 #include "sim/paths.h"
 
 namespace toponav::experiments {
@@ -22,8 +19,31 @@ double KnownSpaceIoU(const core::World& world, const mapping::MapView& map) {
   return mapping::IoU(KnownSet(map), mapping::PolygonSet::FromPolygon(core::FreeSpacePolygon(world)));
 }
 
-MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& o) {
-  using Clock = std::chrono::steady_clock;
+namespace {
+
+// Follows a fixed path: waypoints within half a step of the agent are reached, one it cannot get to (clutter
+// in the way) is skipped; the run ends when the path's end is reached.
+class FollowPath : public AgentPolicy {
+ public:
+  explicit FollowPath(std::vector<core::Vec2> path) : path_(std::move(path)) {}
+  bool Plan(const LoopState& state, std::vector<std::vector<core::Vec2>>* paths) override {
+    if (next_ >= path_.size()) return false;
+    (*paths)[0].assign(path_.begin() + long(next_), path_.end());
+    return true;
+  }
+  sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& s, sim::MotionSim& motion,
+                            core::Rng& rng) override {
+    while (next_ < path_.size() && core::Distance(s.pose.position(), path_[next_]) < 0.5 * state.step_length) ++next_;
+    if (s.blocked) ++next_;
+    return s;
+  }
+
+ private:
+  std::vector<core::Vec2> path_;
+  size_t next_ = 1;
+};
+
+std::vector<core::Vec2> DrivePath(const core::World& world, const Config& config, const MapDriveOptions& o) {
   std::vector<core::Vec2> path;
   const double clearance = config.motion.agent_radius + 1.0;  // room to pass clutter
   if (o.path == "guide") path = world.guide_path;
@@ -31,47 +51,12 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
   else if (o.path == "tour") path = sim::CoverageTour(world, world.start.position(), o.tour_spacing, clearance);
   else throw core::ConfigError("<command line>", "--path", o.path, "expected tour, guide or goal");
   if (path.size() < 2) throw core::DataError("<world>", "no drivable path of kind '" + o.path + "'");
+  return path;
+}
 
-  mapping::MapperOptions mo = config.mapping;
-  mo.world_bounds = world.bounds;
-  if (!world.has_boundary()) mo.open_region = world.bounds;  // open world: its bounds are the search region
-  if (o.mcmc_every <= 0) mo.defer_to_mcmc = false;  // without MCMC every vertex with enough detections is kept
-  mapping::Mapper mapper(mo);
-  auto sensor = sim::CreateNoisyGroundTruthSensor(world, config.sensor, core::DeriveSeed(o.seed, 1));
-  core::Rng rng(core::DeriveSeed(o.seed, 2));
-  sim::MotionSim motion(world, config.motion);
-  const int agent = motion.AddAgent(world.start);
-
-  MapDriveResult r;
-  double update_ms = 0, mcmc_ms = 0;
-  int mcmc_calls = 0;
-  size_t waypoint = 1;
-  r.agent_path.push_back(world.start.position());
-  for (int step = 0; step < o.max_steps && waypoint < path.size(); ++step) {
-    const core::Pose2 pose = motion.Pose(agent);
-    auto t0 = Clock::now();
-    mapper.AddObservation(sensor->Observe(pose, agent));
-    mapper.View();  // what a planner would ask for each step
-    update_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    if (o.mcmc_every > 0 && (step + 1) % o.mcmc_every == 0) {
-      t0 = Clock::now();
-      mapper.SampleMostLikelyMap(rng);
-      mcmc_ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-      ++mcmc_calls;
-    }
-    // Follow the path; waypoints already reached are dropped.
-    std::vector<core::Vec2> rest(path.begin() + long(waypoint), path.end());
-    const sim::StepResult s = motion.Step(agent, rest);
-    r.agent_path.push_back(s.pose.position());
-    while (waypoint < path.size() && core::Distance(s.pose.position(), path[waypoint]) < 0.5 * sim::StepLength(config.motion, world))
-      ++waypoint;
-    if (s.blocked) ++waypoint;  // skip a waypoint we cannot reach (clutter in the way)
-    r.steps = step + 1;
-  }
-  if (o.mcmc_every > 0) mapper.SampleMostLikelyMap(rng);
-  r.view = mapper.ExactView();  // (the per-step views let vertices drift a little before known space follows)
-  r.log_posterior = mapper.LogPosterior();
-  r.known_space_iou = KnownSpaceIoU(world, r.view);
+// Map vertices against the world's true vertices: false ones, and the mean error of the others.
+void ScoreVertices(const core::World& world, MapDriveResult* out) {
+  MapDriveResult& r = *out;
   const auto truth = core::MapVertices(world);
   r.map_vertices = int(r.view.vertices.size());
   int matched = 0;
@@ -85,6 +70,10 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
     }
   }
   if (matched > 0) r.mean_vertex_error /= matched;
+}
+
+void ScoreWalls(const core::World& world, MapDriveResult* out) {
+  MapDriveResult& r = *out;
   // A map wall is true when its ends match (within the radius) the two ends of one true wall.
   const auto rings = core::MapRings(world);
   auto nearest_ref = [&](const core::Vec2& p, core::VertexRef* ref) {
@@ -111,8 +100,26 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
     }
     r.false_walls += !ok;
   }
-  r.mean_update_ms = r.steps > 0 ? update_ms / r.steps : 0.0;
-  r.mean_mcmc_ms = mcmc_calls > 0 ? mcmc_ms / mcmc_calls : 0.0;
+}
+
+}  // namespace
+
+MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& o) {
+  FollowPath policy(DrivePath(world, config, o));
+  LoopOptions lo;
+  lo.max_steps = o.max_steps;
+  lo.mcmc_every = o.mcmc_every;
+  const LoopResult loop = RunAgentLoop(world, config, lo, policy, o.seed);
+  MapDriveResult r;
+  r.agent_path = loop.paths[0];
+  r.steps = loop.steps;
+  r.mean_update_ms = r.steps > 0 ? 1e3 * (loop.observe_s + loop.view_s) / r.steps : 0.0;
+  r.mean_mcmc_ms = loop.mcmc_calls > 0 ? 1e3 * loop.mcmc_s / loop.mcmc_calls : 0.0;
+  r.view = loop.final_view;
+  r.log_posterior = loop.mapper->LogPosterior();
+  r.known_space_iou = KnownSpaceIoU(world, r.view);
+  ScoreVertices(world, &r);
+  ScoreWalls(world, &r);
   return r;
 }
 

@@ -180,7 +180,4 @@ struct OpenSpace {
 core::Ring OpenStarPolygon(const core::Vec2& center, const std::vector<StarPoint>& points, const OpenSpace& space,
                            std::vector<int>* hit = nullptr);
 
-// Minimum-cost one-to-one assignment of rows to columns (rows <= columns); returns the column of each row.
-std::vector<int> SolveAssignment(const std::vector<std::vector<double>>& cost);
-
 }  // namespace toponav::mapping

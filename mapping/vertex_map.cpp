@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "core/assignment.h"
 #include "core/error.h"
 #include "mapping/mapping.h"
 
@@ -342,7 +343,7 @@ struct Mapper::Impl {
         }
         cost[k][cand.size() + k] = o.association_gate_chi2;
       }
-      const std::vector<int> col = SolveAssignment(cost);
+      const std::vector<int> col = core::SolveAssignment(cost);
       for (size_t k = 0; k < n; ++k)
         if (col[k] >= 0 && size_t(col[k]) < cand.size() && cost[k][size_t(col[k])] < big) ob.vid[k] = cand[size_t(col[k])];
     }

@@ -34,11 +34,4 @@ GraphPath ShortestPath(const Graph& graph, int source, int target);
 // Costs from 'source' to every node (infinity where unreachable).
 std::vector<double> ShortestCosts(const Graph& graph, int source);
 
-// The order of the shortest open tour that starts outside the nodes and visits every node once: 'from_start'[i]
-// is the cost of reaching node i first, 'between'[i][j] of going from i to j (symmetric; infinity: no way).
-// Nodes the start cannot reach are left out.  Exact (dynamic programming over subsets) up to 'exact_max' nodes;
-// beyond, nearest neighbour improved by 2-opt moves.  Ties go to the lower index, so the order is deterministic.
-std::vector<int> ShortestOpenTour(const std::vector<double>& from_start,
-                                  const std::vector<std::vector<double>>& between, int exact_max = 10);
-
 }  // namespace toponav::planning

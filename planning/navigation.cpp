@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 
+#include "core/assignment.h"
 #include "core/error.h"
 
 namespace toponav::planning {
@@ -21,8 +22,6 @@ void PlannerOptions::Validate() const {
   if (!(frontier_setback > 0)) fail("planning.frontier_setback", frontier_setback, "must be > 0");
   if (!(frontier_row_gap >= 0)) fail("planning.frontier_row_gap", frontier_row_gap, "must be >= 0");
   if (!(frontier_row_tolerance > 0)) fail("planning.frontier_row_tolerance", frontier_row_tolerance, "must be > 0");
-  if (!(frontier_target_clearance >= 0))
-    fail("planning.frontier_target_clearance", frontier_target_clearance, "must be >= 0");
 }
 
 namespace {
@@ -256,63 +255,6 @@ FrontierTarget TargetAt(const mapping::MapView& view, const mapping::Frontier& f
   return {f.id, target, f.length, outward};
 }
 
-// Points along a frontier's polyline, 'step' apart, with the direction of the segment under each.
-struct Sample {
-  Vec2 p, dir;
-  double s;  // arc length
-};
-std::vector<Sample> SampleFrontier(const mapping::Frontier& f, double step) {
-  std::vector<Sample> samples;
-  double s0 = 0;
-  for (size_t i = 1; i < f.points.size(); ++i) {
-    const Vec2 a = f.points[i - 1], b = f.points[i];
-    const double len = core::Distance(a, b);
-    if (len < 1e-9) continue;
-    const Vec2 dir = (b - a) / len;
-    const int n = std::max(1, int(std::ceil(len / step)));
-    for (int k = 0; k < n; ++k) samples.push_back({a + dir * (len * k / n), dir, s0 + len * k / n});
-    s0 += len;
-    if (i + 1 == f.points.size()) samples.push_back({b, dir, s0});
-  }
-  return samples;
-}
-
-// How far 'p' is from the map's walls and vertices and the seen candidate vertices (which line walls the map
-// has not accepted yet).
-double Clearance(const mapping::MapView& view, const Vec2& p) {
-  double c = std::numeric_limits<double>::infinity();
-  for (const auto& w : view.walls) c = std::min(c, core::DistanceToSegment(p, {w.pa, w.pb}));
-  for (const auto* list : {&view.vertices, &view.rejected})
-    for (const auto& v : *list) c = std::min(c, core::Distance(p, v.position));
-  return c;
-}
-
-// The target for the stretch [a, b) of 'samples' around its middle 'mid' (a sample index): there, unless
-// options.frontier_target_clearance asks for more room than it has, then the nearest sample of the stretch
-// that has it (the one with the most room if none has).
-FrontierTarget TargetInStretch(const mapping::MapView& view, const mapping::Frontier& f, const std::vector<Sample>& samples,
-                               size_t a, size_t b, size_t mid, const PlannerOptions& options) {
-  FrontierTarget t = TargetAt(view, f, samples[mid].p, samples[mid].dir, options);
-  const double want = options.frontier_target_clearance;
-  if (want <= 0) return t;
-  double best = Clearance(view, t.point);
-  if (best >= want) return t;
-  // Outward from the middle, alternating sides: the first sample with room wins.
-  for (size_t k = 1; mid + k < b || mid >= a + k; ++k) {
-    for (const size_t i : {mid + k, mid - k}) {
-      if (i < a || i >= b || (i == mid - k && mid < a + k)) continue;
-      const FrontierTarget c = TargetAt(view, f, samples[i].p, samples[i].dir, options);
-      const double room = Clearance(view, c.point);
-      if (room > best) {
-        best = room;
-        t = c;
-      }
-      if (room >= want) return t;
-    }
-  }
-  return t;
-}
-
 // The target at the frontier's midpoint (the direction of the segment under it).
 FrontierTarget MidpointTarget(const mapping::MapView& view, const mapping::Frontier& f, const PlannerOptions& options) {
   double best = std::numeric_limits<double>::infinity();
@@ -327,17 +269,6 @@ FrontierTarget MidpointTarget(const mapping::MapView& view, const mapping::Front
   return TargetAt(view, f, f.midpoint, dir, options);
 }
 
-// The target at the frontier's midpoint, or where it has room (options.frontier_target_clearance).
-FrontierTarget RoomyTarget(const mapping::MapView& view, const mapping::Frontier& f, const PlannerOptions& options) {
-  const FrontierTarget t = MidpointTarget(view, f, options);
-  if (options.frontier_target_clearance <= 0 || Clearance(view, t.point) >= options.frontier_target_clearance) return t;
-  const std::vector<Sample> samples = SampleFrontier(f, 0.5);
-  if (samples.empty()) return t;
-  size_t mid = 0;
-  while (mid + 1 < samples.size() && samples[mid + 1].s <= 0.5 * samples.back().s) ++mid;
-  return TargetInStretch(view, f, samples, 0, samples.size(), mid, options);
-}
-
 }  // namespace
 
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options) {
@@ -345,48 +276,9 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
   for (const auto& f : view.frontiers) {
     if (f.length < options.frontier_min_length || f.points.size() < 2) continue;
     if (AlongVertexRow(f, view, options)) continue;
-    out.push_back(RoomyTarget(view, f, options));
+    out.push_back(MidpointTarget(view, f, options));
   }
   return out;
-}
-
-bool FrontierTargetAwayFrom(const mapping::MapView& view, const mapping::Frontier& f,
-                            const std::vector<core::Segment2>& probed, double reach, const PlannerOptions& options,
-                            FrontierTarget* target) {
-  // Walk the polyline in small steps; the longest run of points farther than 'reach' from every probed piece.
-  const std::vector<Sample> samples = SampleFrontier(f, 0.5);
-  auto free = [&](const Vec2& p) {
-    for (const auto& e : probed)
-      if (core::DistanceToSegment(p, e) <= reach) return false;
-    return true;
-  };
-  size_t best_a = 0, best_b = 0;  // [a, b) samples
-  double best_len = -1;
-  for (size_t i = 0; i < samples.size();) {
-    if (!free(samples[i].p)) {
-      ++i;
-      continue;
-    }
-    size_t j = i;
-    while (j < samples.size() && free(samples[j].p)) ++j;
-    const double len = samples[j - 1].s - samples[i].s;
-    if (len > best_len) {
-      best_len = len;
-      best_a = i;
-      best_b = j;
-    }
-    i = j;
-  }
-  if (best_len < options.frontier_min_length) return false;
-  if (best_a == 0 && best_b == samples.size()) {  // nothing of it probed: the usual target
-    *target = RoomyTarget(view, f, options);
-    return true;
-  }
-  const double mid = 0.5 * (samples[best_a].s + samples[best_b - 1].s);
-  size_t k = best_a;
-  while (k + 1 < best_b && samples[k + 1].s <= mid) ++k;
-  *target = TargetInStretch(view, f, samples, best_a, best_b, k, options);
-  return true;
 }
 
 FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
@@ -399,40 +291,12 @@ FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::ve
   choice.status = PlanStatus::kNoPath;
   double best = 0;
   for (size_t k = 0; k < paths.size(); ++k)
-    if (paths[k] && (choice.status != PlanStatus::kFound || paths[k].cost + targets[k].bias < best)) {
-      best = paths[k].cost + targets[k].bias;
+    if (paths[k] && (choice.status != PlanStatus::kFound || paths[k].cost < best)) {
+      best = paths[k].cost;
       choice.status = PlanStatus::kFound;
       choice.frontier_id = targets[k].frontier_id;
       choice.path = paths[k];
     }
-  return choice;
-}
-
-FrontierChoice ChooseFrontierByTour(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
-                                    const Vec2& agent, int exact_max) {
-  FrontierChoice choice;
-  if (targets.empty()) return choice;
-  std::vector<Vec2> goals;
-  for (const auto& t : targets) goals.push_back(t.point);
-  const std::vector<Path> paths = graph.PlanToMany(agent, goals);
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> first(targets.size(), inf);
-  for (size_t k = 0; k < targets.size(); ++k)
-    if (paths[k]) first[k] = paths[k].cost;
-  choice.status = PlanStatus::kNoPath;
-  std::vector<std::vector<double>> between(targets.size(), std::vector<double>(targets.size(), inf));
-  for (size_t i = 0; i < targets.size(); ++i) {
-    if (!paths[i]) continue;
-    const std::vector<Path> from_i = graph.PlanToMany(goals[i], goals);
-    for (size_t j = 0; j < targets.size(); ++j)
-      if (from_i[j]) between[i][j] = from_i[j].cost;
-  }
-  const std::vector<int> tour = ShortestOpenTour(first, between, exact_max);
-  if (tour.empty()) return choice;
-  const size_t k = size_t(tour.front());
-  choice.status = PlanStatus::kFound;
-  choice.frontier_id = targets[k].frontier_id;
-  choice.path = paths[k];
   return choice;
 }
 
@@ -445,7 +309,7 @@ std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const 
   std::vector<std::vector<Path>> paths;
   for (const auto& a : agents) paths.push_back(graph.PlanToMany(a, goals));
   const double kUnreachable = 1e9;
-  auto cost = [&](size_t a, size_t t) { return paths[a][t] ? paths[a][t].cost + targets[t].bias : kUnreachable; };
+  auto cost = [&](size_t a, size_t t) { return paths[a][t] ? paths[a][t].cost : kUnreachable; };
   auto take = [&](size_t a, size_t t) {
     if (!paths[a][t]) {
       out[a].status = PlanStatus::kNoPath;
@@ -459,14 +323,14 @@ std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const 
     std::vector<std::vector<double>> c(agents.size(), std::vector<double>(targets.size()));
     for (size_t a = 0; a < agents.size(); ++a)
       for (size_t t = 0; t < targets.size(); ++t) c[a][t] = cost(a, t);
-    const std::vector<int> col = mapping::SolveAssignment(c);
+    const std::vector<int> col = core::SolveAssignment(c);
     for (size_t a = 0; a < agents.size(); ++a) take(a, size_t(col[a]));
   } else {
     // Fewer frontiers than agents: each frontier gets its cheapest distinct agent, the rest their nearest.
     std::vector<std::vector<double>> c(targets.size(), std::vector<double>(agents.size()));
     for (size_t t = 0; t < targets.size(); ++t)
       for (size_t a = 0; a < agents.size(); ++a) c[t][a] = cost(a, t);
-    const std::vector<int> agent_of = mapping::SolveAssignment(c);
+    const std::vector<int> agent_of = core::SolveAssignment(c);
     std::vector<char> assigned(agents.size(), 0);
     for (size_t t = 0; t < targets.size(); ++t) {
       take(size_t(agent_of[t]), t);

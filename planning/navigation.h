@@ -23,10 +23,6 @@ struct PlannerOptions {
   // must pass (labyrinth corridors are 20 wide).  0: off.
   double frontier_row_gap = 14.0;
   double frontier_row_tolerance = 1.0;
-  // A frontier's target sits at its middle unless that point (set back into known space) is closer than this
-  // to a map wall or vertex: then it moves along the frontier to the nearest point that is not (the most
-  // open one if none is), e.g. off a chord that runs along a wall into a sliver of known space.  0: off.
-  double frontier_target_clearance = 0.0;
   void Validate() const;           // throws core::ConfigError ("planning.inflation_radius", ...)
 };
 
@@ -76,15 +72,8 @@ struct FrontierTarget {
   core::Vec2 point;
   double length = 0.0;
   core::Vec2 outward{1, 0};  // unit normal of the frontier at its midpoint, pointing into unknown space
-  double bias = 0.0;         // added to the path cost when agents choose among targets (a search policy's)
 };
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options);
-// The target for the part of 'frontier' farther than 'reach' from every one of 'probed' (pieces of frontiers
-// agents have given up): the middle of the longest such stretch, set back into known space as above.  False
-// if no stretch is at least frontier_min_length long.
-bool FrontierTargetAwayFrom(const mapping::MapView& view, const mapping::Frontier& frontier,
-                            const std::vector<core::Segment2>& probed, double reach, const PlannerOptions& options,
-                            FrontierTarget* target);
 // True if 'frontier' is straight with no stretch longer than PlannerOptions::frontier_row_gap between detected
 // vertices along it (a wall the map has not accepted yet).
 bool AlongVertexRow(const mapping::Frontier& frontier, const mapping::MapView& view, const PlannerOptions& options);
@@ -96,17 +85,11 @@ struct FrontierChoice {
   Path path;
 };
 
-// Single agent: the reachable frontier with the cheapest path (path cost plus the target's bias).
+// Single agent: the reachable frontier with the cheapest path.
 FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                      const core::Vec2& agent);
 
-// Single agent: the first frontier of the shortest open tour from 'agent' through every reachable frontier
-// target (path costs between targets; a tour visits every target, so biases play no part), exact up to
-// 'exact_max' targets.
-FrontierChoice ChooseFrontierByTour(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
-                                    const core::Vec2& agent, int exact_max = 10);
-
-// A team: agents assigned to distinct frontiers minimizing the summed cost (path plus bias, Hungarian); when
+// A team: agents assigned to distinct frontiers minimizing the summed path cost (Hungarian); when
 // there are fewer reachable frontiers than agents, the extra agents take their own cheapest frontier.
 std::vector<FrontierChoice> AssignFrontiers(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                             const std::vector<core::Vec2>& agents);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/image.h"
 #include "core/world.h"
 
 namespace toponav::sim {
@@ -29,15 +30,7 @@ constexpr int32_t WallId(int ring, int edge) { return ring * 65536 + edge; }  //
 constexpr int32_t kClutterIdBase = 0x40000000;
 constexpr int32_t ClutterId(int index) { return kClutterIdBase + index; }
 
-struct Panorama {
-  int width = 0, height = 0;
-  std::vector<uint8_t> rgb;     // row-major RGB, row 0 at the top
-  std::vector<float> depth;     // distance from the camera per pixel (infinity: sky); empty unless requested
-  std::vector<int32_t> ids;     // obstacle id per pixel (see above); empty unless requested
-  uint8_t r(int row, int col) const { return rgb[3 * (size_t(row) * width + col)]; }
-  uint8_t g(int row, int col) const { return rgb[3 * (size_t(row) * width + col) + 1]; }
-  uint8_t b(int row, int col) const { return rgb[3 * (size_t(row) * width + col) + 2]; }
-};
+using core::Panorama;  // what Render returns (core/image.h)
 
 enum RenderOutput : int { kRenderRgb = 1, kRenderDepth = 2, kRenderIds = 4 };
 

@@ -158,62 +158,6 @@ TEST(Frontiers, AnEndCutAtAGentleTurnBoundsNoRow) {
   EXPECT_TRUE(FrontierTargets(at_candidate, o).empty()) << "a detected vertex at the cut bounds it";
 }
 
-TEST(Frontiers, TheTargetOfAPartlyProbedFrontierIsTheMiddleOfItsLongestUnprobedStretch) {
-  const auto view = RoomWithAnOpenTop({});  // frontier y = 20, x in [0, 40]
-  const PlannerOptions o;
-  FrontierTarget t;
-  // Nothing probed: the usual target at the midpoint.
-  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {}, 3.0, o, &t));
-  const auto usual = FrontierTargets(view, o);
-  ASSERT_EQ(usual.size(), 1u);
-  EXPECT_NEAR(t.point.x, usual[0].point.x, 1e-9);
-  EXPECT_NEAR(t.point.y, usual[0].point.y, 1e-9);
-  // Probed over x in [5, 20]: farther than 3 from it is x > 23 (17 long) and x < 2 (too short); the target is
-  // in the middle of the long stretch, set back into the room, and points out through the frontier.
-  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{5, 20}, {20, 20}}}, 3.0, o, &t));
-  EXPECT_EQ(t.frontier_id, 1);
-  EXPECT_NEAR(t.point.x, 31.5, 0.51);
-  EXPECT_NEAR(t.point.y, 20.0 - o.frontier_setback, 1e-9);
-  EXPECT_NEAR(t.outward.y, 1.0, 1e-9);
-  // Probed nearly all along: no stretch as long as frontier_min_length is left.
-  EXPECT_FALSE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{0, 20}, {34, 20}}}, 3.0, o, &t));
-}
-
-TEST(Frontiers, AFrontierTargetInASliverOfKnownSpaceMovesAlongTheFrontierToRoom) {
-  // A corridor (x in [0, 20], y in [20, 60]) whose right side is a frontier x = 20 from y = -20 to 60; below
-  // y = 20 the known space is a sliver x in [17, 20] beside a wall: the chord runs along a room's wall.
-  const std::vector<Vec2> corners = {{0, 60}, {0, 20}, {17, 20}, {17, -20}, {20, -20}, {20, 60}};
-  auto view = View(corners, {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 0}},
-                   {core::Ring{{0, 60}, {0, 20}, {17, 20}, {17, -20}, {20, -20}, {20, 60}}});
-  view.frontiers = {{1, {{20, -20}, {20, 60}}, {20, 20}, 80.0}};
-  PlannerOptions o;
-  const auto mid = FrontierTargets(view, o);
-  ASSERT_EQ(mid.size(), 1u);
-  EXPECT_NEAR(mid[0].point.x, 18.0, 1e-9) << "set back 2 from the middle, 1 from the corner (17, 20)";
-  EXPECT_NEAR(mid[0].point.y, 20.0, 1e-9);
-  o.frontier_target_clearance = 4.8;
-  const auto moved = FrontierTargets(view, o);
-  ASSERT_EQ(moved.size(), 1u);
-  EXPECT_NEAR(moved[0].point.x, 18.0, 1e-9);
-  EXPECT_NEAR(moved[0].point.y, 25.0, 1e-9) << "the nearest point 4.8 from the corner, up the corridor";
-  EXPECT_NEAR(moved[0].outward.x, 1.0, 1e-9);
-  EXPECT_EQ(moved[0].frontier_id, 1);
-  // A doorway with room at its middle keeps its target there.
-  const auto door = RoomWithAnOpenTop({});
-  const auto kept = FrontierTargets(door, o);
-  ASSERT_EQ(kept.size(), 1u);
-  EXPECT_NEAR(kept[0].point.x, 20.0, 1e-9);
-  // The same rule inside the unprobed stretch of a partly probed frontier: probed over y in [-20, 10],
-  // the stretch y > 13 has its middle at about 36.5, which has room already.
-  FrontierTarget t;
-  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{20, -20}, {20, 10}}}, 3.0, o, &t));
-  EXPECT_NEAR(t.point.y, 36.5, 0.51);
-  // Probed over y in [20, 60]: the stretch y < 17 is all sliver (1 from the wall x = 17): no point has more
-  // room than its middle, which stays the target.
-  ASSERT_TRUE(FrontierTargetAwayFrom(view, view.frontiers[0], {{{20, 20}, {20, 60}}}, 3.0, o, &t));
-  EXPECT_NEAR(t.point.y, -1.75, 0.51);
-}
-
 TEST(Frontiers, SingleAgentGoesToTheNearest) {
   const auto view = ThreeDoorRoom();
   const VisibilityGraph g(view, {}, true);
@@ -221,47 +165,6 @@ TEST(Frontiers, SingleAgentGoesToTheNearest) {
   ASSERT_EQ(choice.status, PlanStatus::kFound);
   EXPECT_EQ(choice.frontier_id, 1);
   EXPECT_EQ(ChooseNearestFrontier(g, {}, {17, 10}).status, PlanStatus::kNothingToExplore);
-}
-
-TEST(Frontiers, ATargetsBiasAddsToItsPathCostWhenChoosing) {
-  const auto view = ThreeDoorRoom();
-  const VisibilityGraph g(view, {}, true);
-  auto targets = FrontierTargets(view, {});
-  ASSERT_EQ(targets.size(), 3u);
-  // From (17, 10) door 1 (x = 20) is ~1 away, door 2 (y = 20) ~12, door 3 (x = 0) ~15.
-  targets[0].bias = 12.0;  // door 1 now costs ~13: door 2 is cheaper
-  auto choice = ChooseNearestFrontier(g, targets, {17, 10});
-  ASSERT_EQ(choice.status, PlanStatus::kFound);
-  EXPECT_EQ(choice.frontier_id, 2);
-  EXPECT_NEAR(choice.path.cost, core::Distance({17, 10}, targets[1].point), 1e-6) << "the path keeps its own cost";
-  targets[0].bias = 5.0;
-  EXPECT_EQ(ChooseNearestFrontier(g, targets, {17, 10}).frontier_id, 1);
-  // A team of one near door 3 and one near door 1, each door biased heavily: the assignment swaps them.
-  targets[0].bias = 0;
-  const auto plain = AssignFrontiers(g, targets, {{17, 10}, {3, 10}});
-  ASSERT_EQ(plain.size(), 2u);
-  EXPECT_EQ(plain[0].frontier_id, 1);
-  EXPECT_EQ(plain[1].frontier_id, 3);
-  targets[0].bias = 100;
-  targets[2].bias = 100;
-  const auto biased = AssignFrontiers(g, targets, {{17, 10}, {3, 10}});
-  std::set<int> ids{biased[0].frontier_id, biased[1].frontier_id};
-  EXPECT_TRUE(ids.count(2)) << "one agent takes the unbiased door 2";
-}
-
-TEST(Frontiers, TourOrderTakesTheFrontierThatStartsTheShortestTour) {
-  const auto view = ThreeDoorRoom();
-  const VisibilityGraph g(view, {}, true);
-  const auto targets = FrontierTargets(view, {});  // (18, 10), (10, 18), (2, 10)
-  // From (12, 15) door 2 is nearest (3.6), but door 1 (7.8) starts the shortest tour: 1, 2, 3 is 30.4 long,
-  // 2 first at least 30.9.
-  EXPECT_EQ(ChooseNearestFrontier(g, targets, {12, 15}).frontier_id, 2);
-  const auto tour = ChooseFrontierByTour(g, targets, {12, 15});
-  ASSERT_EQ(tour.status, PlanStatus::kFound);
-  EXPECT_EQ(tour.frontier_id, 1);
-  EXPECT_NEAR(tour.path.cost, core::Distance({12, 15}, targets[0].point), 1e-6);
-  EXPECT_EQ(ChooseFrontierByTour(g, {}, {12, 15}).status, PlanStatus::kNothingToExplore);
-  EXPECT_EQ(ChooseFrontierByTour(g, {targets[1]}, {12, 15}).frontier_id, 2) << "one target: that one";
 }
 
 TEST(Frontiers, TeamNeverSharesAFrontierWhileEnoughExist) {

@@ -1,0 +1,92 @@
+#include "experiments/agent_loop.h"
+
+#include <chrono>
+
+#include "core/error.h"
+#include "experiments/sensor_factory.h"
+
+namespace toponav::experiments {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+mapping::MapperOptions MapperOptionsFor(const core::World& world, const Config& config, const LoopOptions& o) {
+  mapping::MapperOptions mo = config.mapping;
+  mo.world_bounds = world.bounds;
+  if (!world.has_boundary()) mo.open_region = world.bounds;  // open world: its bounds are the search region
+  if (o.mcmc_every <= 0) mo.defer_to_mcmc = false;           // without MCMC every vertex with enough detections is kept
+  return mo;
+}
+
+// Moves every agent one step along its path, letting the policy correct each step; records paths.
+void MoveAgents(const LoopState& state, const std::vector<std::vector<core::Vec2>>& paths, AgentPolicy& policy,
+                sim::MotionSim& motion, core::Rng& rng, LoopResult* r) {
+  for (size_t a = 0; a < paths.size(); ++a) {
+    sim::StepResult s = motion.Step(int(a), paths[a]);
+    s = policy.AfterStep(state, int(a), s, motion, rng);
+    r->distance[a] += s.distance;
+    r->paths[a].push_back(s.pose.position());
+  }
+}
+
+}  // namespace
+
+LoopResult RunAgentLoop(const core::World& world, const Config& config, const LoopOptions& o, AgentPolicy& policy,
+                        uint64_t seed) {
+  TOPONAV_CHECK(o.num_agents >= 1 && o.max_steps >= 0, "num_agents " << o.num_agents << ", max_steps " << o.max_steps);
+  LoopResult r;
+  r.mapper = std::make_unique<mapping::Mapper>(MapperOptionsFor(world, config, o));
+  mapping::Mapper& mapper = *r.mapper;
+  auto sensor = CreateSensor(config.sensor, {&world, config.render, world.goal, core::DeriveSeed(seed, 1)});
+  core::Rng rng(core::DeriveSeed(seed, 2));
+  sim::MotionSim motion(world, config.motion);
+  r.distance.assign(size_t(o.num_agents), 0.0);
+  r.paths.resize(size_t(o.num_agents));
+  for (int a = 0; a < o.num_agents; ++a) {
+    motion.AddAgent(world.start);
+    r.paths[size_t(a)].push_back(world.start.position());
+  }
+  LoopState state;
+  state.world = &world;
+  state.trails = &r.paths;
+  state.step_length = sim::StepLength(config.motion, world);
+  mapping::MapView view;
+  state.view = &view;
+  std::vector<std::vector<core::Vec2>> paths(size_t(o.num_agents));
+  for (int step = 0; step < o.max_steps; ++step) {
+    const auto t0 = Clock::now();
+    state.step = step;
+    state.poses.clear();
+    for (int a = 0; a < o.num_agents; ++a) state.poses.push_back(motion.Pose(a));
+    for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(state.poses[size_t(a)], a));
+    const auto t1 = Clock::now();
+    if (o.mcmc_every > 0 && step % o.mcmc_every == 0) {
+      mapper.SampleMostLikelyMap(rng, o.mcmc_samples);
+      ++r.mcmc_calls;
+    }
+    const auto t2 = Clock::now();
+    view = mapper.View();
+    const auto t3 = Clock::now();
+    r.observe_s += Seconds(t0, t1);
+    r.mcmc_s += Seconds(t1, t2);
+    r.view_s += Seconds(t2, t3);
+    for (auto& p : paths) p.clear();
+    r.steps = step + 1;
+    if (!policy.Plan(state, &paths)) {
+      r.ended_by_policy = true;
+      r.plan_s += Seconds(t3, Clock::now());
+      break;
+    }
+    MoveAgents(state, paths, policy, motion, rng, &r);
+    r.plan_s += Seconds(t3, Clock::now());
+    if (o.on_step) o.on_step(view, r.paths);
+  }
+  if (o.mcmc_every > 0) mapper.SampleMostLikelyMap(rng);
+  r.final_view = mapper.ExactView();  // (the per-step views let vertices drift a little before known space follows)
+  if (o.on_step) o.on_step(r.final_view, r.paths);
+  return r;
+}
+
+}  // namespace toponav::experiments

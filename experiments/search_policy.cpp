@@ -1,0 +1,97 @@
+#include "experiments/search_policy.h"
+
+#include <cmath>
+
+namespace toponav::experiments {
+
+using core::Vec2;
+
+SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int num_agents)
+    : search_(config.search),
+      planning_(config.planning),
+      planner_(planning::CreateSearchPlanner(num_agents)),
+      given_up_(config.search.give_up_reach, config.search.give_up_probe_radius),
+      dwell_(config.search.give_up_steps, config.search.give_up_distance),
+      commitment_(num_agents, config.search.switch_ratio, config.search.switch_margin),
+      stuck_(num_agents, config.search.stuck_steps, sim::StepLength(config.motion, world)) {
+  search_.Validate();
+  if (!world.has_boundary()) region_ = world.bounds;
+}
+
+std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapView& view) {
+  // The same place under a new id is given up again; grown ones come back, counted afresh.
+  for (int id : given_up_.Update(view.frontiers)) dwell_.Reset(id);
+  std::vector<planning::FrontierTarget> targets;
+  for (const auto& t : planning::FrontierTargets(view, planning_))
+    if (!given_up_.Contains(t.frontier_id) && (!region_ || region_->Contains(t.point))) targets.push_back(t);
+  return targets;
+}
+
+bool SearchPolicy::Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view) {
+  if (targets.empty() && !view.known_space.empty()) {
+    end_reason_ = "explored";
+    explored_ = true;
+    return true;
+  }
+  // Frontiers none of the agents can reach for a while: no reachable frontier is left, which is the paper's
+  // definition of explored (a map error that walls one off shows in the IoU instead).
+  bool any = false;
+  for (const auto& c : choices_) any = any || c.status == planning::PlanStatus::kFound;
+  unreachable_ = any || targets.empty() ? 0 : unreachable_ + 1;
+  if (unreachable_ >= search_.unreachable_steps) {
+    end_reason_ = "unreachable";
+    explored_ = true;
+    return true;
+  }
+  return false;
+}
+
+// Frontiers standing agents are next to count a step toward being given up (only agents that stand: one
+// walking along or through a frontier toward its pushed-through target is still finding out what is behind).
+void SearchPolicy::CountDwelling(const LoopState& state, const std::vector<Vec2>& agents) {
+  std::vector<char> standing;
+  for (const auto& trail : *state.trails) standing.push_back(planning::FrontierDwell::Standing(trail, state.step_length));
+  for (size_t i : dwell_.CountStanding(targets_, original_, agents, standing))
+    given_up_.GiveUp(targets_[i].frontier_id, state.view->frontiers, &original_[i].point);
+}
+
+bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) {
+  const mapping::MapView& view = *state.view;
+  original_ = Targets(view);
+  targets_ = original_;
+  dwell_.PushThrough(&targets_, planning_.frontier_setback + search_.push_distance, region_);
+  // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out on
+  // the way and the plan is redone every step.
+  const planning::VisibilityGraph graph(view, planning_, false);
+  planning::PlanningProblem problem{&view, &graph, &targets_, {}, std::nullopt};
+  for (const auto& p : state.poses) problem.agents.push_back(p.position());
+  choices_ = planner_->Plan(problem);
+  commitment_.Apply(graph, targets_, problem.agents, &choices_);
+  if (on_plan) on_plan(targets_, choices_);
+  if (Ended(targets_, view)) return false;
+  CountDwelling(state, problem.agents);
+  for (size_t a = 0; a < choices_.size(); ++a)
+    if (choices_[a].status == planning::PlanStatus::kFound)
+      (*paths)[a].assign(choices_[a].path.points.begin() + 1, choices_[a].path.points.end());
+  return true;
+}
+
+sim::StepResult SearchPolicy::AfterStep(const LoopState& state, int agent, const sim::StepResult& step,
+                                        sim::MotionSim& motion, core::Rng& rng) {
+  const planning::FrontierChoice& c = choices_[size_t(agent)];
+  const bool found = c.status == planning::PlanStatus::kFound;
+  const bool has_path = found && c.path.points.size() > 1;
+  // No path at all while there are frontiers: the agent may stand where the map leaves it no way out.
+  const bool no_way = c.status == planning::PlanStatus::kNoPath && !targets_.empty();
+  const bool stuck = stuck_.NoHeadway((*state.trails)[size_t(agent)], has_path, no_way, step.pose.position(), step.distance);
+  // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward giving
+  // it up as if it stood next to it; all of it counts as probed.
+  if (stuck && found && dwell_.Count(c.frontier_id)) given_up_.GiveUp(c.frontier_id, state.view->frontiers);
+  if (!stuck_.Record(agent, stuck)) return step;
+  // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
+  const double angle = rng.Uniform(-core::kPi, core::kPi);
+  ++nudges_;
+  return motion.Nudge(agent, Vec2{std::cos(angle), std::sin(angle)} * state.step_length);
+}
+
+}  // namespace toponav::experiments

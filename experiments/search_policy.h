@@ -1,0 +1,59 @@
+#pragma once
+// The frontier-search policy (paper Sec. IV) on the agent loop: every step the frontier targets the search
+// has not given up (in open worlds only those inside the search region), pushed through where agents dwelt,
+// go to the planner (the nearest frontier for one agent, distinct frontiers for a team); agents keep their
+// frontier while it stays competitive (commitment); frontiers agents stand next to without them going away,
+// or cannot get to, are given up; stuck agents are nudged.  The search ends when no frontier is left
+// ("explored") or none has been reachable for search.unreachable_steps steps ("unreachable").
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "experiments/agent_loop.h"
+#include "planning/given_up_frontiers.h"
+#include "planning/planner.h"
+#include "planning/search_policy.h"
+
+namespace toponav::experiments {
+
+class SearchPolicy : public AgentPolicy {
+ public:
+  SearchPolicy(const core::World& world, const Config& config, int num_agents);
+
+  bool Plan(const LoopState& state, std::vector<std::vector<core::Vec2>>* paths) override;
+  sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& step, sim::MotionSim& motion,
+                            core::Rng& rng) override;
+
+  // Called every step before agents move with the frontier targets on offer and each agent's choice (traces).
+  std::function<void(const std::vector<planning::FrontierTarget>&, const std::vector<planning::FrontierChoice>&)> on_plan;
+
+  bool explored() const { return explored_; }
+  const std::string& end_reason() const { return end_reason_; }  // "explored", "unreachable", "step_cap"
+  int nudges() const { return nudges_; }
+  int give_ups() const { return given_up_.given_up(); }
+
+ private:
+  std::vector<planning::FrontierTarget> Targets(const mapping::MapView& view);
+  bool Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view);
+  void CountDwelling(const LoopState& state, const std::vector<core::Vec2>& agents);
+
+  SearchOptions search_;
+  planning::PlannerOptions planning_;
+  std::optional<core::Aabb2> region_;  // open worlds: the search region (the world's bounds)
+  std::unique_ptr<planning::Planner> planner_;
+  planning::GivenUpFrontiers given_up_;
+  planning::FrontierDwell dwell_;
+  planning::FrontierCommitment commitment_;
+  planning::StuckMonitor stuck_;
+  // This step's targets (pushed through where agents dwelt, and as they were before) and choices.
+  std::vector<planning::FrontierTarget> targets_, original_;
+  std::vector<planning::FrontierChoice> choices_;
+  int unreachable_ = 0;
+  bool explored_ = false;
+  std::string end_reason_ = "step_cap";
+  int nudges_ = 0;
+};
+
+}  // namespace toponav::experiments

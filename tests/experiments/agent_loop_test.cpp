@@ -1,0 +1,78 @@
+#include "experiments/agent_loop.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/testing/worlds.h"
+
+namespace toponav::experiments {
+namespace {
+
+// Walks every agent east for 'steps' steps, then ends the run; records what it saw.
+class WalkEast : public AgentPolicy {
+ public:
+  explicit WalkEast(int steps) : steps_(steps) {}
+  bool Plan(const LoopState& state, std::vector<std::vector<core::Vec2>>* paths) override {
+    observations.push_back(state.view->num_observations);
+    if (state.step >= steps_) return false;
+    for (size_t a = 0; a < paths->size(); ++a) (*paths)[a] = {state.poses[a].position() + core::Vec2{10, 0}};
+    return true;
+  }
+  sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& step, sim::MotionSim& motion,
+                            core::Rng& rng) override {
+    ++after_steps;
+    return step;
+  }
+  std::vector<int> observations;
+  int after_steps = 0;
+
+ private:
+  int steps_;
+};
+
+TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndThePolicyEndsTheRun) {
+  const core::World w = testing::RoomWorld(60, 30);
+  Config config;
+  WalkEast policy(4);
+  LoopOptions o;
+  o.num_agents = 2;
+  int calls = 0;
+  o.on_step = [&](const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&) { ++calls; };
+  const LoopResult r = RunAgentLoop(w, config, o, policy, 5);
+  EXPECT_EQ(r.steps, 5) << "four steps moved, the fifth ended the run";
+  EXPECT_TRUE(r.ended_by_policy);
+  EXPECT_EQ(policy.observations, (std::vector<int>{2, 4, 6, 8, 10})) << "both agents observe every step";
+  EXPECT_EQ(policy.after_steps, 8);
+  EXPECT_EQ(calls, 5) << "after each of the 4 moves, and once with the final map";
+  ASSERT_EQ(r.paths.size(), 2u);
+  EXPECT_EQ(r.paths[0].size(), 5u);
+  EXPECT_NEAR(r.paths[0].back().x - r.paths[0].front().x, 4 * config.motion.step_length, 1e-4);  // Box2D works in floats
+  EXPECT_NEAR(r.distance[1], 4 * config.motion.step_length, 1e-4);  // Box2D works in floats
+  EXPECT_EQ(r.mcmc_calls, 1) << "MCMC on step 0 (the next would be step 5)";
+  EXPECT_EQ(r.final_view.num_observations, 10);
+  ASSERT_TRUE(r.mapper);
+}
+
+TEST(AgentLoop, TheStepCapEndsARunThePolicyDoesNot) {
+  const core::World w = testing::RoomWorld(60, 30);
+  WalkEast policy(1000);
+  LoopOptions o;
+  o.max_steps = 7;
+  o.mcmc_every = 3;
+  const LoopResult r = RunAgentLoop(w, Config{}, o, policy, 5);
+  EXPECT_EQ(r.steps, 7);
+  EXPECT_FALSE(r.ended_by_policy);
+  EXPECT_EQ(r.mcmc_calls, 3) << "steps 0, 3 and 6";
+}
+
+TEST(AgentLoop, TheSameSeedGivesTheSameMap) {
+  const core::World w = testing::RoomWorld(60, 30);
+  WalkEast a(6), b(6);
+  const LoopResult ra = RunAgentLoop(w, Config{}, {}, a, 9), rb = RunAgentLoop(w, Config{}, {}, b, 9);
+  ASSERT_EQ(ra.final_view.vertices.size(), rb.final_view.vertices.size());
+  for (size_t i = 0; i < ra.final_view.vertices.size(); ++i)
+    EXPECT_EQ(ra.final_view.vertices[i].position.x, rb.final_view.vertices[i].position.x);
+  EXPECT_EQ(ra.final_view.known_area(), rb.final_view.known_area());
+}
+
+}  // namespace
+}  // namespace toponav::experiments
