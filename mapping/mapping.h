@@ -52,7 +52,7 @@ struct MapperOptions {
   double frontier_wall_tolerance = 1.5;   // known-space boundary this close to a map wall is wall, not frontier
   double frontier_split_angle = 0.3;      // a frontier turning by more than this (radians) is split there ...
   double frontier_split_min_length = 8.0; // ... if both pieces are at least this long; 0 angle: never split
-                                          // (closed worlds only: see Frontiers in vertex_map.cpp)
+                                          // (closed worlds only: see mapping/internal/frontiers.cpp)
   std::optional<core::Aabb2> world_bounds;  // if set, observations from outside are rejected
   // Open worlds (the office park): the search region.  Where the sensor's labels say no wall continues on
   // either side of a gap between two detected vertices, the agent sees through it out to this region's edge
@@ -129,13 +129,14 @@ class Mapper {
   // The log posterior of the current map (all observations).
   double LogPosterior() const;
 
-  // The map of the last MCMC call (or the live one without defer_to_mcmc) with its known space and frontiers
-  // (computed incrementally and cached).
-  MapView View() const;
+  // The map of the last MCMC call (or the live one without defer_to_mcmc) with its known space and frontiers,
+  // brought up to date incrementally (not const: known space and frontier ids advance with each call, so
+  // call it once per map update).
+  MapView View();
   // The same map with its known space rebuilt exactly from the vertices' current positions (View lets a
   // vertex drift up to options.star_rebuild_tolerance before rebuilding around it, and the union of star
   // polygons built from older positions reaches into obstacles).  Slower: for scoring a final map.
-  MapView ExactView() const;
+  MapView ExactView();
 
   // All potential vertices and their inclusion flags (for tests and pictures).
   std::vector<MapVertex> PotentialVertices() const;

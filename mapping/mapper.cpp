@@ -1,0 +1,189 @@
+// The Mapper's front door: it keeps the map's evidence (mapping/internal/map_core.h) and hands the work to
+// the concerns under mapping/internal/ (association and Kalman updates, wall evidence, posterior and MCMC,
+// known space, frontiers).  References: the paper's Sec. III and vertexnav.md §2 (with the fixes of §10
+// items 2-3, 7).
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "mapping/internal/frontiers.h"
+#include "mapping/internal/known_space.h"
+#include "mapping/internal/map_core.h"
+#include "mapping/internal/mcmc.h"
+#include "mapping/internal/posterior.h"
+#include "mapping/internal/stars.h"
+#include "mapping/mapping.h"
+
+namespace toponav::mapping {
+
+using core::Vec2;
+
+namespace internal {
+
+double Wrap2Pi(double a) {
+  a = std::fmod(a, 2 * core::kPi);
+  return a < 0 ? a + 2 * core::kPi : a;
+}
+
+}  // namespace internal
+
+double MapView::known_area() const {
+  double a = 0;
+  for (const auto& p : known_space) a += core::Area(p);
+  return a;
+}
+
+void MapperOptions::Validate() const {
+  auto fail = [](const char* key, double v, const char* why) {
+    throw core::ConfigError("<options>", key, std::to_string(v), why);
+  };
+  if (!(association_gate_chi2 > 0)) fail("mapping.association_gate_chi2", association_gate_chi2, "must be > 0");
+  if (!(false_positive_rate > 0 && false_positive_rate < 1)) fail("mapping.false_positive_rate", false_positive_rate, "must be in (0, 1)");
+  if (!(false_negative_rate > 0 && false_negative_rate < 1)) fail("mapping.false_negative_rate", false_negative_rate, "must be in (0, 1)");
+  if (!(vertex_log_prior <= 0)) fail("mapping.vertex_log_prior", vertex_log_prior, "must be <= 0");
+  if (!(wall_log_prior <= 0)) fail("mapping.wall_log_prior", wall_log_prior, "must be <= 0");
+  if (min_detections < 1) fail("mapping.min_detections", min_detections, "must be >= 1");
+  if (!(wall_threshold > 0 && wall_threshold < 1)) fail("mapping.wall_threshold", wall_threshold, "must be in (0, 1)");
+  if (!(wall_skip_damping >= 0 && wall_skip_damping <= 1)) fail("mapping.wall_skip_damping", wall_skip_damping, "must be in [0, 1]");
+  if (!(association_count_bias >= 0)) fail("mapping.association_count_bias", association_count_bias, "must be >= 0");
+  if (!(wall_on_segment_tolerance >= 0)) fail("mapping.wall_on_segment_tolerance", wall_on_segment_tolerance, "must be >= 0");
+  if (!(edge_log_floor < 0)) fail("mapping.edge_log_floor", edge_log_floor, "must be < 0");
+  if (mcmc_samples < 0) fail("mapping.mcmc_samples", mcmc_samples, "must be >= 0");
+  if (mcmc_window < 1) fail("mapping.mcmc_window", mcmc_window, "must be >= 1");
+  if (!(max_range > 0)) fail("mapping.max_range", max_range, "must be > 0");
+  if (!(star_rebuild_tolerance >= 0)) fail("mapping.star_rebuild_tolerance", star_rebuild_tolerance, "must be >= 0");
+  if (union_block < 1) fail("mapping.union_block", union_block, "must be >= 1");
+  if (!(frontier_wall_tolerance >= 0)) fail("mapping.frontier_wall_tolerance", frontier_wall_tolerance, "must be >= 0");
+  if (!(frontier_split_angle >= 0 && frontier_split_angle <= core::kPi)) fail("mapping.frontier_split_angle", frontier_split_angle, "must be in [0, pi]");
+  if (!(frontier_split_min_length >= 0)) fail("mapping.frontier_split_min_length", frontier_split_min_length, "must be >= 0");
+  if (!(open_frontier_reach >= 0)) fail("mapping.open_frontier_reach", open_frontier_reach, "must be >= 0");
+  if (!(open_sample_step > 0 && open_sample_step <= 0.5)) fail("mapping.open_sample_step", open_sample_step, "must be in (0, 0.5]");
+  if (open_region && !(open_region->max.x > open_region->min.x && open_region->max.y > open_region->min.y))
+    fail("mapping.open_region", open_region->width(), "must have a positive width and height");
+}
+
+namespace {
+
+void CheckObservation(const MapperOptions& o, const core::Observation& z) {
+  auto bad = [](const std::string& what) { throw core::DataError("<observation>", what); };
+  if (!std::isfinite(z.pose.x) || !std::isfinite(z.pose.y) || !std::isfinite(z.pose.yaw)) bad("pose is not finite");
+  if (o.world_bounds && !o.world_bounds->Contains(z.pose.position()))
+    bad("pose (" + std::to_string(z.pose.x) + ", " + std::to_string(z.pose.y) + ") is outside the world");
+  for (size_t k = 0; k < z.detections.size(); ++k) {
+    const auto& d = z.detections[k];
+    const std::string at = "detection " + std::to_string(k) + ": ";
+    if (!std::isfinite(d.range) || !std::isfinite(d.bearing) || d.range < 0) bad(at + "range/bearing is NaN, infinite or negative");
+    const auto& c = d.polar;
+    if (!std::isfinite(c.xx) || !std::isfinite(c.xy) || !std::isfinite(c.yy) || c.xx <= 0 || c.yy <= 0 ||
+        c.xx * c.yy - c.xy * c.xy <= 0)
+      bad(at + "covariance is not positive definite");
+    for (double p : d.labels)
+      if (!std::isfinite(p) || p < 0) bad(at + "label probabilities must be finite and non-negative");
+  }
+}
+
+}  // namespace
+
+struct Mapper::Impl {
+  explicit Impl(const MapperOptions& options) : core(options) {}
+  internal::MapCore core;
+  internal::KnownSpace known;
+  internal::FrontierTracker frontiers;
+  // The map planners see (and known space is computed against): frozen at each MCMC call when
+  // options.defer_to_mcmc, otherwise the live state.
+  internal::MapState view_map;
+  MapperStats stats;
+
+  const internal::MapState& ViewMap() {
+    if (!core.o.defer_to_mcmc) view_map = core.walls.State(core.vertices);
+    if (view_map.mapped.size() < core.vertices.size()) view_map.mapped.resize(core.vertices.size(), 0);  // newer vertices: not yet in
+    return view_map;
+  }
+  void Add(const core::Observation& z);
+  MapView MakeView(double tolerance);
+};
+
+void Mapper::Impl::Add(const core::Observation& z) {
+  CheckObservation(core.o, z);
+  internal::Obs ob;
+  ob.pose = z.pose;
+  ob.det = z.detections;
+  std::sort(ob.det.begin(), ob.det.end(), [](const auto& a, const auto& b) { return a.bearing < b.bearing; });
+  const size_t n = ob.det.size();
+  std::vector<Eigen::Vector2d> zpos(n);
+  std::vector<Eigen::Matrix2d> R(n);
+  ob.at.resize(n);
+  ob.cov.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    const Vec2 p = core::DetectionPosition(z.pose, ob.det[k]);
+    ob.at[k] = p;
+    zpos[k] = {p.x, p.y};
+    R[k] = internal::ToEigen(core::DetectionCovariance(z.pose, ob.det[k]));
+    ob.cov[k] = R[k].ldlt();
+  }
+  ob.vid = core.vertices.Update(zpos, R);
+  core.walls.Add(ob, core.vertices.size());
+  core.obs.push_back(std::move(ob));
+  internal::RefreshStar(&core, core.obs.size() - 1);
+}
+
+MapView Mapper::Impl::MakeView(double tolerance) {
+  internal::RefreshStars(&core, tolerance);
+  const internal::MapState& ms = ViewMap();
+  known.Update(core, ms, tolerance);
+  MapView view;
+  for (size_t i = 0; i < core.vertices.size(); ++i) {
+    if (!core.vertices.Seen(int(i))) continue;
+    const auto& x = core.vertices[i];
+    const MapVertex mv{int(i), internal::ToVec(x.x), internal::FromEigen(x.P), x.n};
+    (ms.mapped[i] ? view.vertices : view.rejected).push_back(mv);
+  }
+  for (const auto& [a, b] : ms.walls) view.walls.push_back({a, b, core.Pos(a), core.Pos(b), core.walls.Prob(a, b, ms.mapped)});
+  view.known_space = known.total().Polygons();
+  view.known_set = std::make_shared<const PolygonSet>(known.total());
+  view.frontiers = frontiers.Extract(core, ms, view.known_space);
+  view.num_observations = int(core.obs.size());
+  return view;
+}
+
+Mapper::Mapper(const MapperOptions& options) {
+  options.Validate();
+  impl_ = std::make_unique<Impl>(options);
+}
+Mapper::~Mapper() = default;
+
+void Mapper::AddObservation(const core::Observation& z) { impl_->Add(z); }
+
+double Mapper::SampleMostLikelyMap(core::Rng& rng, int samples) {
+  const double gain = internal::SampleMostLikelyMap(&impl_->core, rng, samples < 0 ? impl_->core.o.mcmc_samples : samples,
+                                                    &impl_->stats);
+  impl_->view_map = impl_->core.walls.State(impl_->core.vertices);
+  return gain;
+}
+
+double Mapper::LogPosterior() const {
+  return internal::LogPosterior(impl_->core, impl_->core.walls.State(impl_->core.vertices));
+}
+const MapperOptions& Mapper::options() const { return impl_->core.o; }
+
+std::vector<MapVertex> Mapper::PotentialVertices() const {
+  std::vector<MapVertex> out;
+  for (size_t i = 0; i < impl_->core.vertices.size(); ++i) {
+    const auto& x = impl_->core.vertices[i];
+    out.push_back({int(i), internal::ToVec(x.x), internal::FromEigen(x.P), x.n});
+  }
+  return out;
+}
+
+MapperStats Mapper::Stats() const {
+  MapperStats s = impl_->stats;
+  s.num_potential_vertices = int(impl_->core.vertices.size());
+  s.num_walls_with_evidence = int(impl_->core.walls.size());
+  return s;
+}
+
+MapView Mapper::View() { return impl_->MakeView(impl_->core.o.star_rebuild_tolerance); }
+MapView Mapper::ExactView() { return impl_->MakeView(0.0); }
+
+}  // namespace toponav::mapping
