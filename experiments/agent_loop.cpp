@@ -41,7 +41,8 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   mapping::Mapper& mapper = *r.mapper;
   auto sensor = CreateSensor(config.sensor, {&world, config.render, world.goal, core::DeriveSeed(seed, 1)});
   core::Rng rng(core::DeriveSeed(seed, 2));
-  sim::MotionSim motion(world, config.motion);
+  const sim::MotionOptions motion_options = MotionFor(config, world);
+  sim::MotionSim motion(world, motion_options);
   r.distance.assign(size_t(o.num_agents), 0.0);
   r.paths.resize(size_t(o.num_agents));
   for (int a = 0; a < o.num_agents; ++a) {
@@ -51,7 +52,7 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   LoopState state;
   state.world = &world;
   state.trails = &r.paths;
-  state.step_length = sim::StepLength(config.motion, world);
+  state.step_length = motion_options.step_length;
   mapping::MapView view;
   state.view = &view;
   std::vector<std::vector<core::Vec2>> paths(size_t(o.num_agents));

@@ -83,7 +83,7 @@ json RecordJson(const TrialId& id, const TrialResult* r, const std::string& erro
     t.num_agents = id.agents;
     t.max_steps = config.bench.max_steps;
     t.mcmc_every = config.bench.mcmc_every;
-    t.open_world_mcmc_every = config.bench.open_world_mcmc_every;
+    t.open_world_mcmc_every = config.open_world.mcmc_every;
     std::string name = id.Key();
     std::replace(name.begin(), name.end(), '/', '_');
     std::unique_ptr<TrialVideo> video;
@@ -152,94 +152,141 @@ std::string BatchStamp(const std::string& config_path) {
   return os.str();
 }
 
-BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::vector<TrialId>& all) {
-  const auto t0 = std::chrono::steady_clock::now();
-  TOPONAV_CHECK(o.shard_count >= 1 && o.shard_index >= 0 && o.shard_index < o.shard_count,
-                "shard " << o.shard_index << "/" << o.shard_count);
+namespace {
+
+std::string ResultsFile(const BatchOptions& o) {
+  const std::string name = o.shard_count == 1 ? std::string("trials.jsonl")
+                                              : "trials-" + std::to_string(o.shard_index) + "-of-" +
+                                                    std::to_string(o.shard_count) + ".jsonl";
+  return (fs::path(o.out_dir) / name).string();
+}
+
+// --fresh discards the directory's trials; otherwise only trials of this program and config may be resumed
+// (they are pure functions of program, config and seed).
+void PrepareOutput(const BatchOptions& o) {
   fs::create_directories(o.out_dir);
-  BatchSummary summary;
-  summary.results_file = (fs::path(o.out_dir) / (o.shard_count == 1 ? std::string("trials.jsonl")
-                                                                      : "trials-" + std::to_string(o.shard_index) + "-of-" +
-                                                                            std::to_string(o.shard_count) + ".jsonl"))
-                             .string();
   const std::string stamp_file = (fs::path(o.out_dir) / "batch-stamp.txt").string();
   if (o.fresh) {
     for (const auto& f : ResultFiles(o.out_dir)) fs::remove(f);
     fs::remove(stamp_file);
   }
-  if (!o.stamp.empty()) {
-    // Trials are pure functions of (program, config, seed): only resume what this program and config made.
-    std::string old;
-    if (std::ifstream in(stamp_file); in) std::getline(in, old);
-    if (!ResultFiles(o.out_dir).empty() && old != o.stamp)
-      throw core::DataError(stamp_file, old.empty() ? "the directory holds trials of an unknown build or config (no stamp): "
-                                                      "use another --out, or --fresh to discard them"
-                                                    : "the directory's trials came from another build or config (stamp " + old +
-                                                          ", now " + o.stamp + "): use another --out, or --fresh to discard them");
-    std::ofstream(stamp_file) << o.stamp << "\n";
-  }
-  // Resume: whatever this directory already holds is done.
+  if (o.stamp.empty()) return;
+  std::string old;
+  if (std::ifstream in(stamp_file); in) std::getline(in, old);
+  if (!ResultFiles(o.out_dir).empty() && old != o.stamp)
+    throw core::DataError(stamp_file, old.empty() ? "the directory holds trials of an unknown build or config (no stamp): "
+                                                    "use another --out, or --fresh to discard them"
+                                                  : "the directory's trials came from another build or config (stamp " + old +
+                                                        ", now " + o.stamp + "): use another --out, or --fresh to discard them");
+  std::ofstream(stamp_file) << o.stamp << "\n";
+}
+
+// This shard's trials that the directory does not hold yet (at most max_new_trials).
+std::vector<TrialId> PendingTrials(const BatchOptions& o, const std::vector<TrialId>& all, BatchSummary* summary) {
   std::set<std::string> done;
   for (const auto& r : ReadResults({o.out_dir})) done.insert(r.id.Key());
   std::vector<TrialId> todo;
   for (size_t k = 0; k < all.size(); ++k) {
     if (int(k % size_t(o.shard_count)) != o.shard_index) continue;
-    ++summary.total;
-    if (done.count(all[k].Key())) ++summary.already_done;
+    ++summary->total;
+    if (done.count(all[k].Key())) ++summary->already_done;
     else todo.push_back(all[k]);
   }
   if (o.max_new_trials >= 0 && int(todo.size()) > o.max_new_trials) todo.resize(size_t(o.max_new_trials));
-  // A run killed mid-write leaves a partial last line: close it so the next record starts on its own line.
+  return todo;
+}
+
+// Opens the results file for appending; a run killed mid-write left a partial last line: close it so the next
+// record starts on its own line.
+std::ofstream OpenResults(const std::string& file) {
   bool ends_cleanly = true;
   {
-    std::ifstream prev(summary.results_file, std::ios::binary | std::ios::ate);
+    std::ifstream prev(file, std::ios::binary | std::ios::ate);
     if (prev && prev.tellg() > 0) {
       prev.seekg(-1, std::ios::end);
       ends_cleanly = prev.get() == '\n';
     }
   }
-  std::ofstream out(summary.results_file, std::ios::app);
-  if (!out) throw core::DataError(summary.results_file, "cannot open for appending");
+  std::ofstream out(file, std::ios::app);
+  if (!out) throw core::DataError(file, "cannot open for appending");
   if (!ends_cleanly) out << "\n";
+  return out;
+}
+
+struct Child {
+  pid_t pid;
+  int fd;
+  TrialId id;
+  std::string buffer;
+};
+
+Child Spawn(const Config& config, const BatchOptions& o, const TrialId& id) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw core::InternalError("pipe() failed");
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw core::InternalError("fork() failed");
+  if (pid == 0) {
+    ::close(fds[0]);
+    ChildMain(config, o, id, fds[1]);
+  }
+  ::close(fds[1]);
+  return {pid, fds[0], id, ""};
+}
+
+// The record of a finished child: the line it wrote, or a failure saying how it ended.
+json Collect(Child& c, int status) {
+  char buf[4096];
+  ssize_t n;
+  while ((n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
+  ::close(c.fd);
+  try {
+    if (!c.buffer.empty() && c.buffer.back() == '\n') return json::parse(c.buffer);
+  } catch (const json::exception&) {
+  }
+  const std::string why = WIFSIGNALED(status) ? "crashed with signal " + std::to_string(WTERMSIG(status))
+                                              : "exited with status " + std::to_string(WEXITSTATUS(status)) + " and no result";
+  return RecordJson(c.id, nullptr, why);
+}
+
+class Progress {
+ public:
+  Progress(const BatchOptions& o, size_t todo) : on_(o.progress), tty_(o.progress && ::isatty(2)), todo_(todo) {}
+  ~Progress() {
+    if (tty_) std::cerr << "\n";
+  }
+  void Report(const BatchSummary& s) const {
+    if (!on_) return;
+    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    const int finished = s.ran;
+    const double eta = finished > 0 ? el / finished * double(todo_ - size_t(finished)) : 0.0;
+    std::cerr << (tty_ ? "\r" : "") << "[bench] " << s.already_done + finished << "/" << s.total << " trials done ("
+              << s.failed << " failed), elapsed " << FormatDuration(el)
+              << (finished > 0 ? ", ETA " + FormatDuration(eta) : std::string()) << (tty_ ? "   " : "\n") << std::flush;
+  }
+
+ private:
+  bool on_, tty_;
+  size_t todo_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+// Runs 'todo' in forked workers, appending one whole line per finished trial (a kill loses at most the
+// running ones).
+void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<TrialId>& todo, std::ofstream& out,
+                BatchSummary* summary) {
   const int workers = o.workers > 0 ? o.workers : std::max(1u, std::thread::hardware_concurrency());
-  const bool tty = o.progress && ::isatty(2);
-  struct Child {
-    pid_t pid;
-    int fd;
-    TrialId id;
-    std::string buffer;
-  };
+  const Progress progress(o, todo.size());
   std::vector<Child> running;
   size_t next = 0;
-  auto report_progress = [&]() {
-    if (!o.progress) return;
-    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const int finished = summary.ran;
-    const double eta = finished > 0 ? el / finished * double(todo.size() - size_t(finished)) : 0.0;
-    std::cerr << (tty ? "\r" : "") << "[bench] " << summary.already_done + finished << "/" << summary.total << " trials done ("
-              << summary.failed << " failed), elapsed " << FormatDuration(el)
-              << (finished > 0 ? ", ETA " + FormatDuration(eta) : std::string()) << (tty ? "   " : "\n") << std::flush;
-  };
   while (next < todo.size() || !running.empty()) {
-    while (next < todo.size() && int(running.size()) < workers) {
-      int fds[2];
-      if (::pipe(fds) != 0) throw core::InternalError("pipe() failed");
-      std::cout.flush();
-      std::cerr.flush();
-      const pid_t pid = ::fork();
-      if (pid < 0) throw core::InternalError("fork() failed");
-      if (pid == 0) {
-        ::close(fds[0]);
-        ChildMain(config, o, todo[next], fds[1]);
-      }
-      ::close(fds[1]);
-      running.push_back({pid, fds[0], todo[next], ""});
-      ++next;
-    }
+    while (next < todo.size() && int(running.size()) < workers) running.push_back(Spawn(config, o, todo[next++]));
     // Read whatever the children wrote, then reap those that finished.
     std::vector<pollfd> pfds;
     for (const auto& c : running) pfds.push_back({c.fd, POLLIN, 0});
     ::poll(pfds.data(), nfds_t(pfds.size()), 200);
+    std::vector<Child> still;
     for (size_t i = 0; i < running.size(); ++i) {
       Child& c = running[i];
       char buf[4096];
@@ -247,35 +294,33 @@ BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::ve
       while ((pfds[i].revents & (POLLIN | POLLHUP)) && (n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
       int status = 0;
       const pid_t w = ::waitpid(c.pid, &status, WNOHANG);
-      if (w == 0) continue;  // still running
+      if (w == 0) {
+        still.push_back(std::move(c));
+        continue;
+      }
       if (w < 0) status = 0x7f00;  // cannot be waited for (e.g. SIGCHLD ignored): give up on it, read what it wrote
-      while ((n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
-      ::close(c.fd);
-      std::string line = c.buffer;
-      json j;
-      bool parsed = false;
-      try {
-        if (!line.empty() && line.back() == '\n') {
-          j = json::parse(line);
-          parsed = true;
-        }
-      } catch (const json::exception&) {
-      }
-      if (!parsed) {
-        const std::string why = WIFSIGNALED(status) ? "crashed with signal " + std::to_string(WTERMSIG(status))
-                                                    : "exited with status " + std::to_string(WEXITSTATUS(status)) + " and no result";
-        j = RecordJson(c.id, nullptr, why);
-      }
-      if (!j.value("ok", false)) ++summary.failed;
-      out << j.dump() << "\n" << std::flush;  // one whole line per trial: a kill loses at most the running ones
-      ++summary.ran;
-      running.erase(running.begin() + long(i));
-      --i;
-      pfds.erase(pfds.begin() + long(i + 1));
-      report_progress();
+      const json j = Collect(c, status);
+      if (!j.value("ok", false)) ++summary->failed;
+      out << j.dump() << "\n" << std::flush;
+      ++summary->ran;
+      progress.Report(*summary);
     }
+    running = std::move(still);
   }
-  if (tty) std::cerr << "\n";
+}
+
+}  // namespace
+
+BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::vector<TrialId>& all) {
+  const auto t0 = std::chrono::steady_clock::now();
+  TOPONAV_CHECK(o.shard_count >= 1 && o.shard_index >= 0 && o.shard_index < o.shard_count,
+                "shard " << o.shard_index << "/" << o.shard_count);
+  PrepareOutput(o);
+  BatchSummary summary;
+  summary.results_file = ResultsFile(o);
+  const std::vector<TrialId> todo = PendingTrials(o, all, &summary);
+  std::ofstream out = OpenResults(summary.results_file);
+  RunWorkers(config, o, todo, out, &summary);
   summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return summary;
 }

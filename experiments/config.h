@@ -37,9 +37,9 @@ struct BenchOptions {
   int num_seeds = 0;
   int max_steps = 400;
   int mcmc_every = 5;
-  int open_world_mcmc_every = 2;  // the cadence in open worlds (see TrialOptions)
   bool pictures = true;          // a final PNG per trial
   bool videos = false;           // an MP4 of every trial (videos/<row>_s<seed>.mp4; slow: one frame a step)
+  static const core::OptionFields<BenchOptions>& Fields();  // the numeric and boolean keys (under bench:)
 };
 
 // How agents search in a trial (the trial loop's policy): YAML section `search:`.
@@ -59,12 +59,23 @@ struct SearchOptions {
                                   // id); 0: off
   double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
                                        // stood (0: all of it)
+  static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
+};
+
+// What differs in open worlds (the office park), YAML section `open_world:`: agents take the longer outdoor
+// step (the reference's outdoor motion primitive), and MCMC runs more often at the same proposals per step
+// (a call proposes mapping.mcmc_samples * mcmc_every / bench.mcmc_every, at least 1).
+struct OpenWorldOptions {
+  double step_length = 3.6;  // world units per agent step (motion.step_length elsewhere)
+  int mcmc_every = 2;        // MCMC cadence in steps (bench.mcmc_every elsewhere; 0 there turns MCMC off)
+  static const core::OptionFields<OpenWorldOptions>& Fields();
 };
 
 struct PictureOptions {
   double pixels_per_unit = 3.0;  // scale of top-down pictures
   int max_pixels = 2400;         // the longer image side is capped at this
+  static const core::OptionFields<PictureOptions>& Fields();
 };
 
 struct Config {
@@ -76,10 +87,14 @@ struct Config {
   mapping::MapperOptions mapping;
   planning::PlannerOptions planning;
   SearchOptions search;
+  OpenWorldOptions open_world;
   PictureOptions picture;
   DemoJob demo;
   BenchOptions bench;
 };
+
+// The motion options agents use in 'world' (open worlds take open_world.step_length): derived once, here.
+sim::MotionOptions MotionFor(const Config& config, const core::World& world);
 
 // Loads and validates 'path'.  Every section and key is optional (defaults above); unknown keys are errors.
 Config LoadConfig(const std::string& path);

@@ -460,77 +460,100 @@ int RunInfo(bool prefer_cuda) {
   return 0;
 }
 
+CLI::App* AddWorldCommand(CLI::App& app, WorldArgs* a) {
+  CLI::App* world = app.add_subcommand("world", "Generate procedural worlds: writes world.json and a top-down world.png");
+  world->add_option("--kind", a->kind, "World kind: labyrinth, office_park or guided_maze");
+  world->add_option("--seed,--seeds", a->seeds, "Seed N, or an inclusive range A-B (files then named KIND_sSEED)")
+      ->capture_default_str();
+  world->add_option("--out", a->out, "Output directory")->capture_default_str();
+  world->add_option("--config", a->config, "YAML config with generator options (e.g. configs/demo.yaml)");
+  world->add_option("--world", a->world_file, "Instead of generating, read this world.json and draw it");
+  world->add_flag("--no-png", a->no_png, "Skip the pictures (faster for many seeds)");
+  world->add_flag("--check", a->check, "Check every world (one connected free space, building gaps, guide path); exit 3 on problems");
+  return world;
+}
+
+CLI::App* AddObserveCommand(CLI::App& app, ObserveArgs* a) {
+  CLI::App* observe = app.add_subcommand("observe", "Print the ground-truth observation from a pose as JSON");
+  AddWorldSourceOptions(observe, a, "YAML config with generator options");
+  observe->add_option("--max-range", a->max_range, "Only vertices closer than this (default: unlimited)")
+      ->check(CLI::PositiveNumber);
+  observe->add_option("--png", a->png, "Also draw the observation to this PNG");
+  return observe;
+}
+
+CLI::App* AddRenderCommand(CLI::App& app, RenderArgs* a) {
+  CLI::App* render = app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
+  AddWorldSourceOptions(render, a, "YAML config (render: width, height, camera_height, ...)");
+  render->add_option("--out", a->out, "Output PNG")->capture_default_str();
+  render->add_option("--poses", a->poses, "Instead: a contact sheet of this many panoramas along a path to the goal")
+      ->check(CLI::Range(1, 1000));
+  render->add_option("--depth", a->depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
+  render->add_option("--ids", a->ids, "Also write the obstacle-id image as text (one row per line)");
+  return render;
+}
+
+CLI::App* AddMapCommand(CLI::App& app, MapArgs* a) {
+  CLI::App* map = app.add_subcommand("map", "Drive an agent along a path with the config's sensor and build the probabilistic map");
+  AddWorldSourceOptions(map, a, "YAML config (sensor:, mapping:, motion:)");
+  map->add_option("--seeds", a->seeds, "Several seeds A-B (files then named map_sSEED)");
+  map->add_option("--path", a->drive.path, "Path to drive: tour (whole free space), guide, goal")->capture_default_str();
+  map->add_option("--steps", a->drive.max_steps, "At most this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
+  map->add_option("--mcmc-every", a->drive.mcmc_every, "MCMC every this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
+  map->add_flag("--no-mcmc", a->no_mcmc, "Build the map without the posterior (every potential vertex kept)");
+  map->add_option("--out", a->out, "Output directory: map.png and map.json")->capture_default_str();
+  return map;
+}
+
+CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
+  CLI::App* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers");
+  AddWorldSourceOptions(trial, a, "YAML config (sensor:, mapping:, motion:)");
+  trial->add_option("--agents", a->trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
+  trial->add_option("--max-steps", a->trial.max_steps, "Step cap")->capture_default_str()->check(CLI::Range(1, 100000));
+  trial->add_option("--mcmc-every", a->trial.mcmc_every, "MCMC every this many steps (0: never)")->capture_default_str()->check(CLI::Range(0, 100000));
+  trial->add_option("--open-world-mcmc-every", a->trial.open_world_mcmc_every,
+                    "MCMC every this many steps in open worlds (office park), at the same proposals per step")
+      ->capture_default_str()->check(CLI::Range(1, 100000));
+  trial->add_option("--out", a->out, "Output directory: trial.png")->capture_default_str();
+  trial->add_option("--video", a->video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
+  trial->add_option("--trace", a->trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals");
+  return trial;
+}
+
+CLI::App* AddBenchCommand(CLI::App& app, BenchArgs* a) {
+  CLI::App* bench = app.add_subcommand("bench", "Run a search benchmark (paper Table I): trials in parallel processes, "
+                                             "JSON lines, resumable, shardable; prints the table");
+  bench->add_option("--config", a->config, "Benchmark config (bench: rows, seeds, max_steps, ...)")->capture_default_str();
+  bench->add_option("--out", a->out, "Results directory (default results/<bench.name>)");
+  bench->add_option("--workers", a->batch.workers, "Parallel trial processes (default: all cores)")->check(CLI::Range(0, 256));
+  bench->add_option("--shard", a->shard, "Run only shard i of N (i/N, 0-based), e.g. 0/4 for a cluster job array");
+  bench->add_option("--seeds", a->seeds, "Override the config's seeds: N or A-B");
+  bench->add_option("--max-trials", a->batch.max_new_trials, "Stop after this many new trials (resume later)")->check(CLI::Range(0, 100000000));
+  bench->add_flag("--quiet", a->quiet, "No progress lines");
+  bench->add_flag("--fresh", a->batch.fresh, "Discard the results directory's trials first (they came from another build or config)");
+  bench->add_option("--fail-trial", a->batch.fail_key, "Testing: make this trial (e.g. labyrinth/a1/s10000) throw")->group("");
+  bench->add_option("--crash-trial", a->batch.crash_key, "Testing: make this trial's process crash")->group("");
+  return bench;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"toponav: topological planning with monocular vision - simulator and experiment harness"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
-
   WorldArgs wa;
-  auto* world = app.add_subcommand("world", "Generate procedural worlds: writes world.json and a top-down world.png");
-  world->add_option("--kind", wa.kind, "World kind: labyrinth, office_park or guided_maze");
-  world->add_option("--seed,--seeds", wa.seeds, "Seed N, or an inclusive range A-B (files then named KIND_sSEED)")
-      ->capture_default_str();
-  world->add_option("--out", wa.out, "Output directory")->capture_default_str();
-  world->add_option("--config", wa.config, "YAML config with generator options (e.g. configs/demo.yaml)");
-  world->add_option("--world", wa.world_file, "Instead of generating, read this world.json and draw it");
-  world->add_flag("--no-png", wa.no_png, "Skip the pictures (faster for many seeds)");
-  world->add_flag("--check", wa.check, "Check every world (one connected free space, building gaps, guide path); exit 3 on problems");
-
   ObserveArgs oa;
-  auto* observe = app.add_subcommand("observe", "Print the ground-truth observation from a pose as JSON");
-  AddWorldSourceOptions(observe, &oa, "YAML config with generator options");
-  observe->add_option("--max-range", oa.max_range, "Only vertices closer than this (default: unlimited)")
-      ->check(CLI::PositiveNumber);
-  observe->add_option("--png", oa.png, "Also draw the observation to this PNG");
-
   RenderArgs ra;
-  auto* render = app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
-  AddWorldSourceOptions(render, &ra, "YAML config (render: width, height, camera_height, ...)");
-  render->add_option("--out", ra.out, "Output PNG")->capture_default_str();
-  render->add_option("--poses", ra.poses, "Instead: a contact sheet of this many panoramas along a path to the goal")
-      ->check(CLI::Range(1, 1000));
-  render->add_option("--depth", ra.depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
-  render->add_option("--ids", ra.ids, "Also write the obstacle-id image as text (one row per line)");
-
   MapArgs ma;
-  auto* map = app.add_subcommand("map", "Drive an agent along a path with the noisy sensor and build the probabilistic map");
-  AddWorldSourceOptions(map, &ma, "YAML config (sensor:, mapping:, motion:)");
-  map->add_option("--seeds", ma.seeds, "Several seeds A-B (files then named map_sSEED)");
-  map->add_option("--path", ma.drive.path, "Path to drive: tour (whole free space), guide, goal")->capture_default_str();
-  map->add_option("--steps", ma.drive.max_steps, "At most this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
-  map->add_option("--mcmc-every", ma.drive.mcmc_every, "MCMC every this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
-  map->add_flag("--no-mcmc", ma.no_mcmc, "Build the map without the posterior (every potential vertex kept)");
-  map->add_option("--out", ma.out, "Output directory: map.png and map.json")->capture_default_str();
-
   TrialArgs ta;
-  auto* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers");
-  AddWorldSourceOptions(trial, &ta, "YAML config (sensor:, mapping:, motion:)");
-  trial->add_option("--agents", ta.trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
-  trial->add_option("--max-steps", ta.trial.max_steps, "Step cap")->capture_default_str()->check(CLI::Range(1, 100000));
-  trial->add_option("--mcmc-every", ta.trial.mcmc_every, "MCMC every this many steps (0: never)")->capture_default_str()->check(CLI::Range(0, 100000));
-  trial->add_option("--open-world-mcmc-every", ta.trial.open_world_mcmc_every,
-                    "MCMC every this many steps in open worlds (office park), at the same proposals per step")
-      ->capture_default_str()->check(CLI::Range(1, 100000));
-  trial->add_option("--out", ta.out, "Output directory: trial.png")->capture_default_str();
-  trial->add_option("--video", ta.video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
-  trial->add_option("--trace", ta.trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals");
-
   BenchArgs ba;
-  auto* bench = app.add_subcommand("bench", "Run a search benchmark (paper Table I): trials in parallel processes, "
-                                             "JSON lines, resumable, shardable; prints the table");
-  bench->add_option("--config", ba.config, "Benchmark config (bench: rows, seeds, max_steps, ...)")->capture_default_str();
-  bench->add_option("--out", ba.out, "Results directory (default results/<bench.name>)");
-  bench->add_option("--workers", ba.batch.workers, "Parallel trial processes (default: all cores)")->check(CLI::Range(0, 256));
-  bench->add_option("--shard", ba.shard, "Run only shard i of N (i/N, 0-based), e.g. 0/4 for a cluster job array");
-  bench->add_option("--seeds", ba.seeds, "Override the config's seeds: N or A-B");
-  bench->add_option("--max-trials", ba.batch.max_new_trials, "Stop after this many new trials (resume later)")->check(CLI::Range(0, 100000000));
-  bench->add_flag("--quiet", ba.quiet, "No progress lines");
-  bench->add_flag("--fresh", ba.batch.fresh, "Discard the results directory's trials first (they came from another build or config)");
-  bench->add_option("--fail-trial", ba.batch.fail_key, "Testing: make this trial (e.g. labyrinth/a1/s10000) throw")->group("");
-  bench->add_option("--crash-trial", ba.batch.crash_key, "Testing: make this trial's process crash")->group("");
-
+  CLI::App* world = AddWorldCommand(app, &wa);
+  CLI::App* observe = AddObserveCommand(app, &oa);
+  CLI::App* render = AddRenderCommand(app, &ra);
+  CLI::App* map = AddMapCommand(app, &ma);
+  CLI::App* trial = AddTrialCommand(app, &ta);
+  CLI::App* bench = AddBenchCommand(app, &ba);
   std::vector<std::string> report_dirs;
   std::string report_out;
   auto* report = app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");

@@ -13,7 +13,7 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
       given_up_(config.search.give_up_reach, config.search.give_up_probe_radius),
       dwell_(config.search.give_up_steps, config.search.give_up_distance),
       commitment_(num_agents, config.search.switch_ratio, config.search.switch_margin),
-      stuck_(num_agents, config.search.stuck_steps, sim::StepLength(config.motion, world)) {
+      stuck_(num_agents, config.search.stuck_steps, MotionFor(config, world).step_length) {
   search_.Validate();
   if (!world.has_boundary()) region_ = world.bounds;
 }

@@ -17,9 +17,8 @@ struct TrialOptions {
   int num_agents = 1;
   int max_steps = 400;          // step cap (the reference's 400 iterations)
   int mcmc_every = 5;           // MCMC cadence in steps (0: never), with mapping.mcmc_samples proposals a call
-  // The cadence in open worlds (the office park), at the same proposals per step: a call there proposes
-  // mapping.mcmc_samples * open_world_mcmc_every / mcmc_every (at least 1).  Agents step twice as far there
-  // (3.6 units), so a building face waits fewer units of travel for MCMC to accept it.  The last call of a
+  // The cadence in open worlds (config: open_world.mcmc_every), at the same proposals per step: a call there
+  // proposes mapping.mcmc_samples * open_world_mcmc_every / mcmc_every (at least 1).  The last call of a
   // trial always proposes mapping.mcmc_samples.
   int open_world_mcmc_every = 2;
   // Called after every step with the map the planners used and the agents' paths so far, and once more

@@ -34,33 +34,40 @@ double MapView::known_area() const {
   return a;
 }
 
-void MapperOptions::Validate() const {
-  auto fail = [](const char* key, double v, const char* why) {
-    throw core::ConfigError("<options>", key, std::to_string(v), why);
+const core::OptionFields<MapperOptions>& MapperOptions::Fields() {
+  using O = MapperOptions;
+  static const core::OptionFields<O> fields{
+      {"association_gate_chi2", &O::association_gate_chi2, 0.01, 1000.0},
+      {"association_count_bias", &O::association_count_bias, 0.0, 100.0},
+      {"false_positive_rate", &O::false_positive_rate, 1e-6, 0.999},
+      {"false_negative_rate", &O::false_negative_rate, 1e-6, 0.999},
+      {"vertex_log_prior", &O::vertex_log_prior, -100.0, 0.0},
+      {"wall_log_prior", &O::wall_log_prior, -100.0, 0.0},
+      {"min_detections", &O::min_detections, 1, 1000},
+      {"wall_threshold", &O::wall_threshold, 0.01, 0.99},
+      {"wall_skip_damping", &O::wall_skip_damping, 0.0, 1.0},
+      {"wall_on_segment_tolerance", &O::wall_on_segment_tolerance, 0.0, 100.0},
+      {"wall_past_detection_min", &O::wall_past_detection_min},
+      {"edge_log_floor", &O::edge_log_floor, -100.0, -1e-6},
+      {"mcmc_samples", &O::mcmc_samples, 0, 100000},
+      {"mcmc_window", &O::mcmc_window, 1, 1000000},
+      {"defer_to_mcmc", &O::defer_to_mcmc},
+      {"max_range", &O::max_range, 1.0, 1e4},
+      {"known_space_candidates", &O::known_space_candidates},
+      {"star_rebuild_tolerance", &O::star_rebuild_tolerance, 0.0, 100.0},
+      {"frontier_wall_tolerance", &O::frontier_wall_tolerance, 0.0, 100.0},
+      {"frontier_split_angle", &O::frontier_split_angle, 0.0, core::kPi},
+      {"frontier_split_min_length", &O::frontier_split_min_length, 0.0, 1000.0},
+      {"open_frontier_reach", &O::open_frontier_reach, 0.0, 1000.0},
   };
-  if (!(association_gate_chi2 > 0)) fail("mapping.association_gate_chi2", association_gate_chi2, "must be > 0");
-  if (!(false_positive_rate > 0 && false_positive_rate < 1)) fail("mapping.false_positive_rate", false_positive_rate, "must be in (0, 1)");
-  if (!(false_negative_rate > 0 && false_negative_rate < 1)) fail("mapping.false_negative_rate", false_negative_rate, "must be in (0, 1)");
-  if (!(vertex_log_prior <= 0)) fail("mapping.vertex_log_prior", vertex_log_prior, "must be <= 0");
-  if (!(wall_log_prior <= 0)) fail("mapping.wall_log_prior", wall_log_prior, "must be <= 0");
-  if (min_detections < 1) fail("mapping.min_detections", min_detections, "must be >= 1");
-  if (!(wall_threshold > 0 && wall_threshold < 1)) fail("mapping.wall_threshold", wall_threshold, "must be in (0, 1)");
-  if (!(wall_skip_damping >= 0 && wall_skip_damping <= 1)) fail("mapping.wall_skip_damping", wall_skip_damping, "must be in [0, 1]");
-  if (!(association_count_bias >= 0)) fail("mapping.association_count_bias", association_count_bias, "must be >= 0");
-  if (!(wall_on_segment_tolerance >= 0)) fail("mapping.wall_on_segment_tolerance", wall_on_segment_tolerance, "must be >= 0");
-  if (!(edge_log_floor < 0)) fail("mapping.edge_log_floor", edge_log_floor, "must be < 0");
-  if (mcmc_samples < 0) fail("mapping.mcmc_samples", mcmc_samples, "must be >= 0");
-  if (mcmc_window < 1) fail("mapping.mcmc_window", mcmc_window, "must be >= 1");
-  if (!(max_range > 0)) fail("mapping.max_range", max_range, "must be > 0");
-  if (!(star_rebuild_tolerance >= 0)) fail("mapping.star_rebuild_tolerance", star_rebuild_tolerance, "must be >= 0");
-  if (union_block < 1) fail("mapping.union_block", union_block, "must be >= 1");
-  if (!(frontier_wall_tolerance >= 0)) fail("mapping.frontier_wall_tolerance", frontier_wall_tolerance, "must be >= 0");
-  if (!(frontier_split_angle >= 0 && frontier_split_angle <= core::kPi)) fail("mapping.frontier_split_angle", frontier_split_angle, "must be in [0, pi]");
-  if (!(frontier_split_min_length >= 0)) fail("mapping.frontier_split_min_length", frontier_split_min_length, "must be >= 0");
-  if (!(open_frontier_reach >= 0)) fail("mapping.open_frontier_reach", open_frontier_reach, "must be >= 0");
-  if (!(open_sample_step > 0 && open_sample_step <= 0.5)) fail("mapping.open_sample_step", open_sample_step, "must be in (0, 0.5]");
+  return fields;
+}
+
+void MapperOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "mapping.");
   if (open_region && !(open_region->max.x > open_region->min.x && open_region->max.y > open_region->min.y))
-    fail("mapping.open_region", open_region->width(), "must have a positive width and height");
+    throw core::ConfigError("<options>", "mapping.open_region", std::to_string(open_region->width()),
+                            "must have a positive width and height");
 }
 
 namespace {

@@ -10,6 +10,7 @@
 
 #include "core/geometry.h"
 #include "core/observation.h"
+#include "core/option_fields.h"
 #include "core/rng.h"
 #include "mapping/polygon_set.h"
 
@@ -28,13 +29,9 @@ struct MapperOptions {
   double wall_on_segment_tolerance = 2.0;  // ... not counting detections within this distance of the segment
                                           // between them whose vertex is not in the map (a false detection on
                                           // the wall); 0: count all (the reference)
-  // The evidence such a pair (a detection on the segment between them) gives for a wall straight past the
-  // detection: true: the smaller of its ends' wall likelihoods (both ends must say a wall runs on); false:
-  // their average, as for neighbouring detections (the reference).  At a doorway the near jamb says no wall
-  // and the corner beyond the far jamb says wall: their average (1/2) made a wall across the doorway a coin
-  // flip whenever the far jamb was out of the map.  A false detection on a wall has both ends saying wall.
-  // Closed worlds only: the office park's buildings have no doorways, and there the smaller end only delayed
-  // building faces with a false detection on them (one agent, tuning seeds 110-309: +3.8 +- 1.5 steps).
+  // Closed worlds: the evidence such a pair (a detection on the segment between them) gives for a wall
+  // straight past the detection is the smaller of its ends' wall likelihoods (both ends must say a wall runs
+  // on) if true, their average (the reference) if false.  (README, "The map", says why.)
   bool wall_past_detection_min = true;
   double edge_log_floor = -1.386;         // log 0.25: an edge term never costs more than this
   int mcmc_samples = 50;                  // proposals per SampleMostLikelyMap call (the paper's 50)
@@ -44,11 +41,9 @@ struct MapperOptions {
   double max_range = 100.0;               // range of hypothetical observations
   // Closed worlds: known space keeps what an observation saw up to its detected vertices that have enough
   // detections even where the posterior leaves them out of the map (the sensor's false positives lie on
-  // walls, so the space in front of them was seen); without it, a long wall whose far corner is out of
-  // range is cut off by a chord from its near corner, and the chord is a frontier that follows the agent.
+  // walls, so the space in front of them was seen).
   bool known_space_candidates = true;
   double star_rebuild_tolerance = 1.0;    // recompute known space around a map vertex once it drifted this far
-  int union_block = 16;                   // observations per cached partial union
   double frontier_wall_tolerance = 1.5;   // known-space boundary this close to a map wall is wall, not frontier
   double frontier_split_angle = 0.3;      // a frontier turning by more than this (radians) is split there ...
   double frontier_split_min_length = 8.0; // ... if both pieces are at least this long; 0 angle: never split
@@ -58,12 +53,11 @@ struct MapperOptions {
   // either side of a gap between two detected vertices, the agent sees through it out to this region's edge
   // (within max_range), so open ground becomes known; the region's edge is never a frontier.
   std::optional<core::Aabb2> open_region;
-  double open_sample_step = 0.1;          // radians between the rays that trace such a gap's far side
   // Open worlds: the search is for buildings, so known-space boundary farther than this from every vertex
   // with enough detections (mapped or not) is where the search ends, like the region's edge: open ground
-  // far from all structure is no frontier (the reference explores only toward inflated map vertices).
-  // 0: every piece of boundary in the region is frontier.
+  // far from all structure is no frontier.  0: every piece of boundary in the region is frontier.
   double open_frontier_reach = 60.0;
+  static const core::OptionFields<MapperOptions>& Fields();  // YAML keys (under mapping:) and their ranges
   void Validate() const;                  // throws core::ConfigError ("mapping.association_gate_chi2", ...)
 };
 

@@ -12,16 +12,23 @@ namespace toponav::planning {
 
 using core::Vec2;
 
-void PlannerOptions::Validate() const {
-  auto fail = [](const char* key, double v, const char* why) {
-    throw core::ConfigError("<options>", key, std::to_string(v), why);
+const core::OptionFields<PlannerOptions>& PlannerOptions::Fields() {
+  using O = PlannerOptions;
+  static const core::OptionFields<O> fields{
+      {"inflation_radius", &O::inflation_radius, 0.01, 100.0},
+      {"clearance", &O::clearance, 0.0, 100.0},
+      {"frontier_min_length", &O::frontier_min_length, 0.0, 1000.0},
+      {"frontier_setback", &O::frontier_setback, 0.01, 100.0},
+      {"frontier_row_gap", &O::frontier_row_gap, 0.0, 1000.0},
+      {"frontier_row_tolerance", &O::frontier_row_tolerance, 0.01, 100.0},
   };
-  if (!(inflation_radius > 0)) fail("planning.inflation_radius", inflation_radius, "must be > 0");
-  if (!(clearance >= 0 && clearance < inflation_radius)) fail("planning.clearance", clearance, "must be in [0, inflation_radius)");
-  if (!(frontier_min_length >= 0)) fail("planning.frontier_min_length", frontier_min_length, "must be >= 0");
-  if (!(frontier_setback > 0)) fail("planning.frontier_setback", frontier_setback, "must be > 0");
-  if (!(frontier_row_gap >= 0)) fail("planning.frontier_row_gap", frontier_row_gap, "must be >= 0");
-  if (!(frontier_row_tolerance > 0)) fail("planning.frontier_row_tolerance", frontier_row_tolerance, "must be > 0");
+  return fields;
+}
+
+void PlannerOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "planning.");
+  if (!(clearance < inflation_radius))
+    throw core::ConfigError("<options>", "planning.clearance", std::to_string(clearance), "must be < inflation_radius");
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/geometry.h"
+#include "core/option_fields.h"
 #include "mapping/mapping.h"
 #include "planning/graph.h"
 
@@ -23,6 +24,7 @@ struct PlannerOptions {
   // must pass (labyrinth corridors are 20 wide).  0: off.
   double frontier_row_gap = 14.0;
   double frontier_row_tolerance = 1.0;
+  static const core::OptionFields<PlannerOptions>& Fields();  // YAML keys (under planning:) and their ranges
   void Validate() const;           // throws core::ConfigError ("planning.inflation_radius", ...)
 };
 

@@ -5,13 +5,13 @@
 #include <memory>
 #include <vector>
 
+#include "core/option_fields.h"
 #include "core/world.h"
 
 namespace toponav::sim {
 
 struct MotionOptions {
   double step_length = 1.8;    // world units travelled per agent step along the path (when unobstructed)
-  double open_world_step_length = 3.6;  // the same in open worlds (the reference's outdoor primitive length)
   double agent_radius = 1.0;   // world units
   int substeps = 12;           // physics sub-steps per agent step
   // Local obstacle avoidance (the robot's own range sensing, which sees clutter the map leaves out): when the
@@ -21,11 +21,9 @@ struct MotionOptions {
   double avoid_margin = 0.3;
   double avoid_window = 12.0;  // half-width of the local grid, world units
   double avoid_cell = 0.5;     // world units
+  static const core::OptionFields<MotionOptions>& Fields();  // YAML keys and their ranges
   void Validate() const;       // throws core::ConfigError
 };
-
-// The step length agents use in 'world' (open worlds take the longer outdoor step).
-double StepLength(const MotionOptions& options, const core::World& world);
 
 struct StepResult {
   core::Pose2 pose;             // after the step; yaw faces the direction of travel

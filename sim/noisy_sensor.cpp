@@ -12,25 +12,27 @@ namespace toponav::sim {
 using core::Detection;
 using core::LabelProbs;
 
-void NoisySensorOptions::Validate() const {
-  auto fail = [](const char* key, double v, const char* why) {
-    throw core::ConfigError("<options>", key, std::to_string(v), why);
+const core::OptionFields<NoisySensorOptions>& NoisySensorOptions::Fields() {
+  using O = NoisySensorOptions;
+  static const core::OptionFields<O> fields{
+      {"max_range", &O::max_range, 1.0, 1e4},
+      {"range_bins", &O::range_bins, 0, 1024},
+      {"bearing_bins", &O::bearing_bins, 0, 4096},
+      {"range_sigma", &O::range_sigma, 0.0, 100.0},
+      {"range_sigma_per_unit", &O::range_sigma_per_unit, 0.0, 1.0},
+      {"bearing_sigma", &O::bearing_sigma, 0.0, 1.0},
+      {"miss_probability", &O::miss_probability, 0.0, 0.99},
+      {"false_positives_per_observation", &O::false_positives_per_observation, 0.0, 50.0},
+      {"merge_bins", &O::merge_bins, 0, 10},
+      {"label_confusion", &O::label_confusion, 0.0, 1.0},
+      {"label_softness", &O::label_softness, 0.0, 1.0},
+      {"reported_sigma_range", &O::reported_sigma_range, 1e-3, 100.0},
+      {"reported_sigma_bearing", &O::reported_sigma_bearing, 1e-4, 3.0},
   };
-  if (!(max_range > 0)) fail("sensor.max_range", max_range, "must be > 0");
-  if (range_bins < 0 || range_bins > 1024) fail("sensor.range_bins", range_bins, "must be in [0, 1024]");
-  if (bearing_bins < 0 || bearing_bins > 4096) fail("sensor.bearing_bins", bearing_bins, "must be in [0, 4096]");
-  if (!(range_sigma >= 0)) fail("sensor.range_sigma", range_sigma, "must be >= 0");
-  if (!(range_sigma_per_unit >= 0)) fail("sensor.range_sigma_per_unit", range_sigma_per_unit, "must be >= 0");
-  if (!(bearing_sigma >= 0)) fail("sensor.bearing_sigma", bearing_sigma, "must be >= 0");
-  if (!(miss_probability >= 0 && miss_probability < 1)) fail("sensor.miss_probability", miss_probability, "must be in [0, 1)");
-  if (!(false_positives_per_observation >= 0 && false_positives_per_observation <= 50))
-    fail("sensor.false_positives_per_observation", false_positives_per_observation, "must be in [0, 50]");
-  if (merge_bins < 0 || merge_bins > 10) fail("sensor.merge_bins", merge_bins, "must be in [0, 10]");
-  if (!(label_confusion >= 0 && label_confusion <= 1)) fail("sensor.label_confusion", label_confusion, "must be in [0, 1]");
-  if (!(label_softness >= 0 && label_softness <= 1)) fail("sensor.label_softness", label_softness, "must be in [0, 1]");
-  if (!(reported_sigma_range > 0)) fail("sensor.reported_sigma_range", reported_sigma_range, "must be > 0");
-  if (!(reported_sigma_bearing > 0)) fail("sensor.reported_sigma_bearing", reported_sigma_bearing, "must be > 0");
+  return fields;
 }
+
+void NoisySensorOptions::Validate() const { core::CheckRanges(*this, Fields(), "sensor."); }
 
 namespace {
 

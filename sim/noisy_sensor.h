@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/observation.h"
+#include "core/option_fields.h"
 #include "core/world.h"
 
 namespace toponav::sim {
@@ -31,6 +32,7 @@ struct NoisySensorOptions {
   // and the map draws a wall across the building between them.
   double reported_sigma_range = 3.5;
   double reported_sigma_bearing = 0.06;
+  static const core::OptionFields<NoisySensorOptions>& Fields();  // YAML keys (under sensor:) and ranges
   void Validate() const;                // throws core::ConfigError ("sensor.max_range", ...)
 };
 

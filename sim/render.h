@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/option_fields.h"
 #include "core/world.h"
 
 namespace toponav::sim {
@@ -21,6 +22,7 @@ struct RenderOptions {
   double wall_height = 30.0;       // indoor walls and ceiling
   int supersample = 1;             // render the cube faces this many times larger before resampling (less blur)
   double plain_wall_fraction = 0.35;  // share of textureless walls in indoor worlds
+  static const core::OptionFields<RenderOptions>& Fields();  // YAML keys and their ranges
   void Validate() const;           // throws core::ConfigError ("render.width", ...)
 };
 

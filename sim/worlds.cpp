@@ -24,10 +24,6 @@ using core::World;
 
 namespace {
 
-void Require(bool ok, const std::string& key, double value, const std::string& problem) {
-  if (!ok) throw core::ConfigError("<options>", key, std::to_string(value), problem);
-}
-
 // Shifts every coordinate of the world by 'offset'.
 void Translate(World& w, const Vec2& offset) {
   for (auto& p : w.boundary) p = p + offset;
@@ -239,44 +235,6 @@ std::vector<Ring> PlaceBuildings(const OfficeParkOptions& o, Rng& rng) {
 }
 
 }  // namespace
-
-void WorldOptions::Validate() const {
-  const auto& l = labyrinth;
-  Require(l.num_rooms >= 2 && l.num_rooms <= 12, "labyrinth.num_rooms", l.num_rooms, "must be in [2, 12]");
-  Require(l.room_min_cells >= 3 && l.room_min_cells <= l.room_max_cells, "labyrinth.room_min_cells",
-          l.room_min_cells, "must be >= 3 (a room has an interior cell) and <= room_max_cells");
-  Require(l.grid_cells >= 2 * l.room_max_cells + 3 && l.grid_cells <= 64, "labyrinth.grid_cells", l.grid_cells,
-          "must be in [2*room_max_cells+3, 64]");
-  Require(l.hall_width > 0 && l.hall_width <= 1000, "labyrinth.hall_width", l.hall_width, "must be in (0, 1000]");
-  Require(l.inflate_ratio >= 0 && l.inflate_ratio < 1, "labyrinth.inflate_ratio", l.inflate_ratio,
-          "must be in [0, 1)");
-  Require(l.num_clutter >= 0 && l.num_clutter <= 1000, "labyrinth.num_clutter", l.num_clutter, "must be in [0, 1000]");
-  Require(l.max_straight_run_cells >= l.room_max_cells, "labyrinth.max_straight_run_cells",
-          l.max_straight_run_cells, "must be >= room_max_cells");
-  Require(l.start_clearance >= 0 && l.start_clearance < l.hall_width / 2, "labyrinth.start_clearance",
-          l.start_clearance, "must be in [0, hall_width/2)");
-  const auto& p = office_park;
-  Require(p.num_buildings >= 1 && p.num_buildings <= 30, "office_park.num_buildings", p.num_buildings,
-          "must be in [1, 30]");
-  Require(p.min_building_gap > 0 && p.min_building_gap < p.max_building_gap, "office_park.min_building_gap",
-          p.min_building_gap, "must be > 0 and < max_building_gap");
-  Require(p.scale_min > 0 && p.scale_min <= p.scale_max, "office_park.scale_min", p.scale_min,
-          "must be > 0 and <= scale_max");
-  Require(p.num_trees >= 0 && p.num_trees <= 500, "office_park.num_trees", p.num_trees, "must be in [0, 500]");
-  Require(p.tree_radius > 0, "office_park.tree_radius", p.tree_radius, "must be > 0");
-  Require(p.tree_min_gap <= p.tree_max_gap, "office_park.tree_min_gap", p.tree_min_gap, "must be <= tree_max_gap");
-  Require(p.start_min_gap <= p.start_max_gap, "office_park.start_min_gap", p.start_min_gap,
-          "must be <= start_max_gap");
-  Require(p.bounds_margin >= 0, "office_park.bounds_margin", p.bounds_margin, "must be >= 0");
-  const auto& m = guided_maze;
-  Require(m.cells_x >= 2 && m.cells_x <= 50, "guided_maze.cells_x", m.cells_x, "must be in [2, 50]");
-  Require(m.cells_y >= 2 && m.cells_y <= 50, "guided_maze.cells_y", m.cells_y, "must be in [2, 50]");
-  Require(m.corridor_width > 0, "guided_maze.corridor_width", m.corridor_width, "must be > 0");
-  Require(m.wall_thickness > 0, "guided_maze.wall_thickness", m.wall_thickness, "must be > 0");
-  Require(m.border > 0, "guided_maze.border", m.border, "must be > 0");
-  Require(m.guide_path_width > 0 && m.guide_path_width <= m.corridor_width, "guided_maze.guide_path_width",
-          m.guide_path_width, "must be in (0, corridor_width]");
-}
 
 World GenerateLabyrinth(const LabyrinthOptions& o, uint64_t seed) {
   Rng rng(seed);

@@ -3,6 +3,7 @@
 // world, byte for byte once written as JSON.
 #include <cstdint>
 
+#include "core/option_fields.h"
 #include "core/world.h"
 
 namespace toponav::sim {
@@ -25,6 +26,7 @@ struct LabyrinthOptions {
   double clutter_height = 2.25;
   double clutter_max_wall_gap = 1.5;    // clutter stands at most this far from a wall
   double start_clearance = 6.0;         // start and goal at least this far from walls and clutter
+  static const core::OptionFields<LabyrinthOptions>& Fields();  // YAML keys and their ranges
 };
 
 // Office park: rotated building footprints 25-40 units apart, and round trees (vertexnav.md §5.3).
@@ -42,6 +44,7 @@ struct OfficeParkOptions {
   double bounds_margin = 20.0;     // the search region is the buildings' bounding box grown by this
   double start_min_gap = 6.0;      // start 6-12 units from the nearest building
   double start_max_gap = 12.0;
+  static const core::OptionFields<OfficeParkOptions>& Fields();
 };
 
 // Guided maze: a randomized-Kruskal spanning-tree maze with a guiding path from start to goal (lsp.md §5.1).
@@ -52,13 +55,14 @@ struct GuidedMazeOptions {
   double wall_thickness = 8.0;
   double border = 10.0;
   double guide_path_width = 4.0;
+  static const core::OptionFields<GuidedMazeOptions>& Fields();
 };
 
 struct WorldOptions {
   LabyrinthOptions labyrinth;
   OfficeParkOptions office_park;
   GuidedMazeOptions guided_maze;
-  void Validate() const;  // throws core::ConfigError naming "<options>" and the key
+  void Validate() const;  // ranges (Fields) and rules between keys; throws core::ConfigError naming the key
 };
 
 core::World GenerateLabyrinth(const LabyrinthOptions& options, uint64_t seed);

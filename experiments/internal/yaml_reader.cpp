@@ -1,6 +1,7 @@
 #include "experiments/internal/yaml_reader.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "core/error.h"
@@ -19,6 +20,12 @@ YamlSection::YamlSection(YAML::Node node, std::string file, std::string path)
     if (!seen.insert(kv.first.Scalar()).second)
       throw core::ConfigError(file_, KeyPath(kv.first.Scalar()), Text(kv.second), "key given twice");
   }
+}
+
+int YamlSection::IntBound(double v) {
+  if (v <= double(std::numeric_limits<int>::min())) return std::numeric_limits<int>::min();
+  if (v >= double(std::numeric_limits<int>::max())) return std::numeric_limits<int>::max();
+  return int(v);
 }
 
 std::string YamlSection::KeyPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }

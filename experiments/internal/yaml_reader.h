@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/option_fields.h"
+
 namespace toponav::experiments::internal {
 
 class YamlSection {
@@ -32,7 +34,18 @@ class YamlSection {
 
   [[noreturn]] void Fail(const std::string& key, const std::string& value, const std::string& problem) const;
 
+  // Reads every key an options struct declares (core/option_fields.h), with its range.
+  template <class Options>
+  void ReadFields(Options* o, const core::OptionFields<Options>& fields) {
+    for (const auto& f : fields) {
+      if (const auto* d = std::get_if<double Options::*>(&f.member)) Read(f.key, &(o->*(*d)), f.lo, f.hi);
+      else if (const auto* i = std::get_if<int Options::*>(&f.member)) Read(f.key, &(o->*(*i)), IntBound(f.lo), IntBound(f.hi));
+      else Read(f.key, &(o->*std::get<bool Options::*>(f.member)));
+    }
+  }
+
  private:
+  static int IntBound(double v);  // a field's bound as an int (infinite: the int's limit)
   std::string KeyPath(const std::string& key) const;
   YAML::Node Get(const std::string& key);
   std::string Text(const YAML::Node& n) const;

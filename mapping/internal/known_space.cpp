@@ -105,13 +105,13 @@ bool KnownSpace::Recompute(const MapCore& m, size_t i, const MapState& ms, const
   piece.ids = H;
   piece.walls = std::move(hit_walls);
   piece.valid = true;
-  block_dirty_[i / size_t(m.o.union_block)] = 1;
+  block_dirty_[i / kUnionBlock] = 1;
   *changed = true;
   return grew;
 }
 
 void KnownSpace::Update(const MapCore& m, const MapState& ms, double tolerance) {
-  const size_t block = size_t(m.o.union_block);
+  const size_t block = kUnionBlock;
   pieces_.resize(m.obs.size());
   while (blocks_.size() * block < m.obs.size()) {
     blocks_.emplace_back();
@@ -142,7 +142,7 @@ void KnownSpace::Update(const MapCore& m, const MapState& ms, double tolerance) 
 // Blocks are the leaves of a binary tree whose inner nodes cache the union of their subtree: a rebuild redoes
 // the dirty blocks and the nodes above them only.
 void KnownSpace::RebuildUnion(const MapCore& m) {
-  const size_t block = size_t(m.o.union_block);
+  const size_t block = kUnionBlock;
   size_t leaves = 1;
   while (leaves < blocks_.size()) leaves *= 2;
   if (union_tree_.size() != 2 * leaves) {  // more blocks than leaves: a bigger tree, every node redone

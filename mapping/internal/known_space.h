@@ -12,6 +12,8 @@
 
 namespace toponav::mapping::internal {
 
+constexpr size_t kUnionBlock = 16;  // observations per cached partial union
+
 class KnownSpace {
  public:
   // Brings the known space up to date with map state 'ms', rebuilding around vertices that drifted farther

@@ -17,7 +17,7 @@ core::Ring RealStar(const MapCore& m, const Obs& ob) {
     for (auto& p : pts) p.open_ccw = p.open_cw = false;
     return OpenStarPolygon(ob.pose.position(), pts, OpenSpace{});
   }
-  return OpenStarPolygon(ob.pose.position(), pts, OpenSpace{*m.o.open_region, m.o.max_range, m.o.open_sample_step, {}});
+  return OpenStarPolygon(ob.pose.position(), pts, OpenSpace{*m.o.open_region, m.o.max_range, kOpenSampleStep, {}});
 }
 
 void RefreshStar(MapCore* m, size_t i) {
@@ -106,7 +106,7 @@ core::Ring HypotheticalStar(const MapCore& m, const Obs& ob, const std::vector<i
     pts.push_back(sp);
   }
   if (!m.o.open_region) return OpenStarPolygon(c, pts, OpenSpace{});
-  OpenSpace space{*m.o.open_region, m.o.max_range, m.o.open_sample_step, {}};
+  OpenSpace space{*m.o.open_region, m.o.max_range, kOpenSampleStep, {}};
   const core::Aabb2 reach{c - Vec2{m.o.max_range, m.o.max_range}, c + Vec2{m.o.max_range, m.o.max_range}};
   std::vector<uint64_t> keys;
   for (const auto* list : {&ms.walls, &closing})

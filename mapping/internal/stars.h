@@ -8,6 +8,8 @@
 
 namespace toponav::mapping::internal {
 
+constexpr double kOpenSampleStep = 0.1;  // radians between the rays that trace an open gap's far side
+
 // The star polygon of an observation's real detections at the vertices' current positions; in an open
 // region the detections' labels say where sight passes a vertex (no wall on that side).
 core::Ring RealStar(const MapCore& m, const Obs& ob);

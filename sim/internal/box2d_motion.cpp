@@ -35,19 +35,23 @@ void AddLoop(b2Body* body, core::Ring ring, bool solid_inside) {
 }
 }  // namespace
 
-void MotionOptions::Validate() const {
-  auto fail = [](const char* key, double v, const char* why) {
-    throw core::ConfigError("<options>", key, std::to_string(v), why);
+const core::OptionFields<MotionOptions>& MotionOptions::Fields() {
+  using O = MotionOptions;
+  static const core::OptionFields<O> fields{
+      {"step_length", &O::step_length, 0.01, 50.0},
+      {"agent_radius", &O::agent_radius, 0.25, 20.0},
+      {"substeps", &O::substeps, 1, 1000},
+      {"avoid_margin", &O::avoid_margin, 0.0, 10.0},
+      {"avoid_window", &O::avoid_window, 1.0, 100.0},
+      {"avoid_cell", &O::avoid_cell, 0.05, 5.0},
   };
-  if (!(step_length > 0 && step_length <= 50)) fail("motion.step_length", step_length, "must be in (0, 50]");
-  if (!(open_world_step_length > 0 && open_world_step_length <= 50))
-    fail("motion.open_world_step_length", open_world_step_length, "must be in (0, 50]");
-  if (!(agent_radius >= 0.25 && agent_radius <= 20)) fail("motion.agent_radius", agent_radius, "must be in [0.25, 20]");
-  if (!(substeps >= 1 && substeps <= 1000)) fail("motion.substeps", substeps, "must be in [1, 1000]");
-  if (!(avoid_margin >= 0 && avoid_margin <= 10)) fail("motion.avoid_margin", avoid_margin, "must be in [0, 10]");
-  if (!(avoid_window >= 1 && avoid_window <= 100)) fail("motion.avoid_window", avoid_window, "must be in [1, 100]");
-  if (!(avoid_cell >= 0.05 && avoid_cell <= 5)) fail("motion.avoid_cell", avoid_cell, "must be in [0.05, 5]");
-  if (avoid_window / avoid_cell > 400) fail("motion.avoid_cell", avoid_cell, "gives more than 400 cells across avoid_window");
+  return fields;
+}
+
+void MotionOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "motion.");
+  if (avoid_window / avoid_cell > 400)
+    throw core::ConfigError("<options>", "motion.avoid_cell", std::to_string(avoid_cell), "gives more than 400 cells across avoid_window");
 }
 
 struct MotionSim::Impl {
@@ -187,15 +191,10 @@ struct MotionSim::Impl {
   }
 };
 
-double StepLength(const MotionOptions& options, const core::World& world) {
-  return world.has_boundary() ? options.step_length : options.open_world_step_length;
-}
-
 MotionSim::MotionSim(const core::World& world, const MotionOptions& options) : impl_(std::make_unique<Impl>()) {
   options.Validate();
   Impl& m = *impl_;
   m.options = options;
-  m.options.step_length = StepLength(options, world);
   m.world = world;
   m.b2world = std::make_unique<b2World>(b2Vec2(0.0f, 0.0f));
   b2BodyDef def;

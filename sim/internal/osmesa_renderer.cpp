@@ -269,16 +269,28 @@ void MatMul(const float a[16], const float b[16], float out[16]) {
 
 }  // namespace
 
+const core::OptionFields<RenderOptions>& RenderOptions::Fields() {
+  using O = RenderOptions;
+  static const core::OptionFields<O> fields{
+      {"width", &O::width, 8, 4096},
+      {"height", &O::height, 2, 2048},
+      {"vertical_fov_deg", &O::vertical_fov_deg, 10.0, 150.0},
+      {"camera_height", &O::camera_height, 0.01, 1000.0},
+      {"wall_height", &O::wall_height, 0.01, 1000.0},
+      {"supersample", &O::supersample, 1, 4},
+      {"plain_wall_fraction", &O::plain_wall_fraction, 0.0, 1.0},
+  };
+  return fields;
+}
+
 void RenderOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "render.");
   auto fail = [](const char* key, double v, const char* why) {
     throw core::ConfigError("<options>", key, std::to_string(v), why);
   };
-  if (width < 8 || width > 4096 || width % 4 != 0) fail("render.width", width, "must be a multiple of 4 in [8, 4096]");
-  if (height < 2 || height > 2048) fail("render.height", height, "must be in [2, 2048]");
-  if (!(vertical_fov_deg >= 10 && vertical_fov_deg <= 150)) fail("render.vertical_fov_deg", vertical_fov_deg, "must be in [10, 150]");
-  if (!(camera_height > 0 && camera_height < wall_height)) fail("render.camera_height", camera_height, "must be in (0, wall_height)");
-  if (supersample < 1 || supersample > 4 || width * supersample > 8192) fail("render.supersample", supersample, "must be in [1, 4] with width * supersample <= 8192");
-  if (!(plain_wall_fraction >= 0 && plain_wall_fraction <= 1)) fail("render.plain_wall_fraction", plain_wall_fraction, "must be in [0, 1]");
+  if (width % 4 != 0) fail("render.width", width, "must be a multiple of 4");
+  if (!(camera_height < wall_height)) fail("render.camera_height", camera_height, "must be < wall_height");
+  if (width * supersample > 8192) fail("render.supersample", supersample, "must keep width * supersample <= 8192");
 }
 
 struct Renderer::Impl {

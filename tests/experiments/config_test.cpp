@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <sstream>
+#include <variant>
+
 #include "core/error.h"
 
 namespace toponav::experiments {
@@ -35,12 +39,61 @@ TEST(Config, ValuesAreRead) {
   EXPECT_EQ(c.demo.seed, 12345u);
 }
 
-TEST(Config, OpenWorldMcmcCadenceIsReadAndChecked) {
-  EXPECT_EQ(ParseConfig("", "empty.yaml").bench.open_world_mcmc_every, 2);
-  const Config c = ParseConfig("bench:\n  mcmc_every: 5\n  open_world_mcmc_every: 1\n", "x.yaml");
+TEST(Config, OpenWorldSettingsFormOneBlock) {
+  const Config d = ParseConfig("", "empty.yaml");
+  EXPECT_EQ(d.open_world.mcmc_every, 2);
+  EXPECT_DOUBLE_EQ(d.open_world.step_length, 3.6);
+  const Config c = ParseConfig("bench:\n  mcmc_every: 5\nopen_world:\n  mcmc_every: 1\n  step_length: 3.0\n", "x.yaml");
   EXPECT_EQ(c.bench.mcmc_every, 5);
-  EXPECT_EQ(c.bench.open_world_mcmc_every, 1);
-  EXPECT_EQ(ErrorOf("bench:\n  open_world_mcmc_every: 0\n").key(), "bench.open_world_mcmc_every");
+  EXPECT_EQ(c.open_world.mcmc_every, 1);
+  EXPECT_EQ(ErrorOf("open_world:\n  mcmc_every: 0\n").key(), "open_world.mcmc_every");
+  EXPECT_EQ(ErrorOf("bench:\n  open_world_mcmc_every: 2\n").key(), "bench.open_world_mcmc_every") << "the old key is gone";
+  EXPECT_EQ(ErrorOf("motion:\n  open_world_step_length: 3\n").key(), "motion.open_world_step_length");
+  // Derived once: agents in an open world take the open-world step.
+  core::World open;
+  open.bounds = {{0, 0}, {100, 100}};
+  EXPECT_DOUBLE_EQ(MotionFor(c, open).step_length, 3.0);
+  core::World closed = open;
+  closed.boundary = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+  EXPECT_DOUBLE_EQ(MotionFor(c, closed).step_length, c.motion.step_length);
+}
+
+// Every declared numeric key of a section: the YAML reader rejects a value past its range naming the key, and
+// Validate() rejects the same value set in code, naming the same key.
+template <class Options, class Get>
+void ExpectOneRangePerKey(const std::string& section, Get get) {
+  int checked = 0;
+  for (const auto& f : Options::Fields()) {
+    if (std::holds_alternative<bool Options::*>(f.member)) continue;
+    const double bad = std::isfinite(f.hi) ? f.hi + 1 : f.lo - 1;
+    std::ostringstream yaml;
+    yaml << section << ":\n  " << f.key << ": " << bad << "\n";
+    EXPECT_EQ(ErrorOf(yaml.str()).key(), section + "." + f.key);
+    Config c;
+    Options& o = get(c);
+    if (const auto* d = std::get_if<double Options::*>(&f.member)) o.*(*d) = bad;
+    else o.*std::get<int Options::*>(f.member) = int(bad);
+    try {
+      Validate(c);
+      ADD_FAILURE() << section << "." << f.key << " = " << bad << " passed Validate()";
+    } catch (const core::ConfigError& e) {
+      EXPECT_EQ(e.key(), section + "." + f.key);
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 0) << section;
+}
+
+TEST(Config, EachKeysRangeIsDeclaredOnceForTheReaderAndValidate) {
+  ExpectOneRangePerKey<mapping::MapperOptions>("mapping", [](Config& c) -> auto& { return c.mapping; });
+  ExpectOneRangePerKey<planning::PlannerOptions>("planning", [](Config& c) -> auto& { return c.planning; });
+  ExpectOneRangePerKey<SearchOptions>("search", [](Config& c) -> auto& { return c.search; });
+  ExpectOneRangePerKey<sim::NoisySensorOptions>("sensor", [](Config& c) -> auto& { return c.sensor.noisy; });
+  ExpectOneRangePerKey<sim::MotionOptions>("motion", [](Config& c) -> auto& { return c.motion; });
+  ExpectOneRangePerKey<sim::RenderOptions>("render", [](Config& c) -> auto& { return c.render; });
+  ExpectOneRangePerKey<OpenWorldOptions>("open_world", [](Config& c) -> auto& { return c.open_world; });
+  ExpectOneRangePerKey<BenchOptions>("bench", [](Config& c) -> auto& { return c.bench; });
+  ExpectOneRangePerKey<PictureOptions>("picture", [](Config& c) -> auto& { return c.picture; });
 }
 
 TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
