@@ -1,5 +1,6 @@
 #include "core/assignment.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 

@@ -3,6 +3,7 @@
 // obstacle ids from the simulator).  Column j of a W-wide panorama looks along bearing
 // core::ColumnToBearing(j, W) relative to the agent's heading; row 0 is the top.  A plain type shared by
 // the renderer (sim), the learned detector (learning) and recorded image folders.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

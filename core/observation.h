@@ -42,8 +42,9 @@ struct CellGrid {
   std::vector<std::string> channels;  // what each channel holds (e.g. frontier properties)
   std::vector<float> values;
   bool empty() const { return values.empty(); }
+  // Requires values.size() == rows * cols * channels.size().
   float at(int row, int col, int channel) const {
-    return values[(size_t(row) * size_t(cols) + size_t(col)) * channels.size() + size_t(channel)];
+    return values.at((size_t(row) * size_t(cols) + size_t(col)) * channels.size() + size_t(channel));
   }
 };
 

@@ -23,6 +23,7 @@ mapping::MapperOptions MapperOptionsFor(const core::World& world, const Config& 
 // Moves every agent one step along its path, letting the policy correct each step; records paths.
 void MoveAgents(const LoopState& state, const std::vector<std::vector<core::Vec2>>& paths, AgentPolicy& policy,
                 sim::MotionSim& motion, core::Rng& rng, LoopResult* r) {
+  TOPONAV_CHECK(paths.size() == r->paths.size(), "the policy planned " << paths.size() << " paths for " << r->paths.size() << " agents");
   for (size_t a = 0; a < paths.size(); ++a) {
     sim::StepResult s = motion.Step(int(a), paths[a]);
     s = policy.AfterStep(state, int(a), s, motion, rng);
@@ -36,10 +37,11 @@ void MoveAgents(const LoopState& state, const std::vector<std::vector<core::Vec2
 LoopResult RunAgentLoop(const core::World& world, const Config& config, const LoopOptions& o, AgentPolicy& policy,
                         uint64_t seed) {
   TOPONAV_CHECK(o.num_agents >= 1 && o.max_steps >= 0, "num_agents " << o.num_agents << ", max_steps " << o.max_steps);
+  Validate(config);  // a config built in code meets the same rules as a loaded one
   LoopResult r;
   r.mapper = std::make_unique<mapping::Mapper>(MapperOptionsFor(world, config, o));
   mapping::Mapper& mapper = *r.mapper;
-  auto sensor = CreateSensor(config.sensor, {&world, config.render, world.goal, core::DeriveSeed(seed, 1)});
+  auto sensor = CreateSensor(config.sensor, {&world, config.render, o.goal, core::DeriveSeed(seed, 1)});
   core::Rng rng(core::DeriveSeed(seed, 2));
   const sim::MotionOptions motion_options = MotionFor(config, world);
   sim::MotionSim motion(world, motion_options);

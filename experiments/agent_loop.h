@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/rng.h"
@@ -50,6 +51,8 @@ struct LoopOptions {
   // 0: never, and then the map keeps every vertex with enough detections (mapping.defer_to_mcmc off).
   int mcmc_every = 5;
   int mcmc_samples = -1;
+  // Goal-directed runs: the goal, which the sensor passes to goal-conditioned detectors; none for a search.
+  std::optional<core::Vec2> goal;
   // After every step with the map the policy used and the agents' paths so far, and once more with the final
   // map the metrics score (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;

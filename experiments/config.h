@@ -16,7 +16,7 @@
 
 namespace toponav::experiments {
 
-// The default job of scripts/run.sh (until the search benchmark exists): one world of each kind.
+// `toponav demo`: one world of each kind, its picture, observation and panorama.
 struct DemoJob {
   std::vector<core::WorldKind> kinds{core::WorldKind::kLabyrinth, core::WorldKind::kOfficePark,
                                      core::WorldKind::kGuidedMaze};

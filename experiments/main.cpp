@@ -308,6 +308,7 @@ struct TrialArgs : WorldSource {
   std::string video;
   std::string trace;
   experiments::TrialOptions trial;
+  std::optional<int> max_steps, mcmc_every, open_world_mcmc_every;  // unset: the config's
 };
 
 int RunTrialCommand(const TrialArgs& a) {
@@ -316,6 +317,9 @@ int RunTrialCommand(const TrialArgs& a) {
   EnsureDir(a.out);
   mapping::MapView view;
   experiments::TrialOptions t = a.trial;
+  t.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
+  t.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
+  t.open_world_mcmc_every = a.open_world_mcmc_every.value_or(cfg.open_world.mcmc_every);
   std::unique_ptr<experiments::TrialVideo> video;
   if (!a.video.empty()) video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
   // Trace: one CSV row a step (the map the planners used; the last row is the final map the metrics score).
@@ -509,11 +513,13 @@ CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
   CLI::App* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers");
   AddWorldSourceOptions(trial, a, "YAML config (sensor:, mapping:, motion:)");
   trial->add_option("--agents", a->trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
-  trial->add_option("--max-steps", a->trial.max_steps, "Step cap")->capture_default_str()->check(CLI::Range(1, 100000));
-  trial->add_option("--mcmc-every", a->trial.mcmc_every, "MCMC every this many steps (0: never)")->capture_default_str()->check(CLI::Range(0, 100000));
-  trial->add_option("--open-world-mcmc-every", a->trial.open_world_mcmc_every,
-                    "MCMC every this many steps in open worlds (office park), at the same proposals per step")
-      ->capture_default_str()->check(CLI::Range(1, 100000));
+  trial->add_option("--max-steps", a->max_steps, "Step cap (default: the config's bench.max_steps)")->check(CLI::Range(1, 100000));
+  trial->add_option("--mcmc-every", a->mcmc_every, "MCMC every this many steps, 0: never (default: the config's bench.mcmc_every)")
+      ->check(CLI::Range(0, 100000));
+  trial->add_option("--open-world-mcmc-every", a->open_world_mcmc_every,
+                    "MCMC every this many steps in open worlds, at the same proposals per step (default: the config's "
+                    "open_world.mcmc_every)")
+      ->check(CLI::Range(1, 100000));
   trial->add_option("--out", a->out, "Output directory: trial.png")->capture_default_str();
   trial->add_option("--video", a->video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
   trial->add_option("--trace", a->trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals");

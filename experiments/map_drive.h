@@ -1,6 +1,7 @@
 #pragma once
-// Building a map along a scripted drive: one agent follows a path through the world, observing with the
-// noisy sensor each step, MCMC on a cadence.  Used by `toponav map` and the mapping quality tests.
+// Building a map along a scripted drive: one agent follows a path through the world on the agent loop,
+// observing with the config's sensor each step, MCMC on a cadence.  Used by `toponav map` and the mapping
+// quality tests.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -6,15 +6,23 @@ namespace toponav::experiments {
 
 using core::Vec2;
 
+namespace {
+
+const SearchOptions& Validated(const SearchOptions& o) {
+  o.Validate();  // before the units check their own arguments: a bad value is a ConfigError naming its key
+  return o;
+}
+
+}  // namespace
+
 SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int num_agents)
-    : search_(config.search),
+    : search_(Validated(config.search)),
       planning_(config.planning),
       planner_(planning::CreateSearchPlanner(num_agents)),
       given_up_(config.search.give_up_reach, config.search.give_up_probe_radius),
       dwell_(config.search.give_up_steps, config.search.give_up_distance),
       commitment_(num_agents, config.search.switch_ratio, config.search.switch_margin),
       stuck_(num_agents, config.search.stuck_steps, MotionFor(config, world).step_length) {
-  search_.Validate();
   if (!world.has_boundary()) region_ = world.bounds;
 }
 

@@ -18,10 +18,9 @@ struct PlannerOptions {
   double frontier_setback = 2.0;   // a frontier target is this far inside known space from its midpoint
   // A straight frontier (within frontier_row_tolerance of its chord) with no stretch longer than
   // frontier_row_gap between detected vertices along it (map vertices and seen candidates; its two ends
-  // count as such) is taken for a wall the map has not accepted yet and gets no target: a wall longer than
-  // the sensor's range lined with candidates, a short chord between two vertices of one wall.  So a straight
-  // frontier shorter than the gap never gets a target.  The gap is kept below the narrowest opening agents
-  // must pass (labyrinth corridors are 20 wide).  0: off.
+  // count as such) is taken for a wall the map has not accepted yet and gets no target (so a straight
+  // frontier shorter than the gap never gets one).  Keep it below the narrowest opening agents must pass.
+  // 0: off.
   double frontier_row_gap = 14.0;
   double frontier_row_tolerance = 1.0;
   static const core::OptionFields<PlannerOptions>& Fields();  // YAML keys (under planning:) and their ranges

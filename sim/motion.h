@@ -11,7 +11,9 @@
 namespace toponav::sim {
 
 struct MotionOptions {
-  double step_length = 1.8;    // world units travelled per agent step along the path (when unobstructed)
+  // World units travelled per agent step along the path (when unobstructed).  The experiments layer derives
+  // the open-world value (experiments::MotionFor); a caller of MotionSim passes the step it wants.
+  double step_length = 1.8;
   double agent_radius = 1.0;   // world units
   int substeps = 12;           // physics sub-steps per agent step
   // Local obstacle avoidance (the robot's own range sensing, which sees clutter the map leaves out): when the

@@ -25,11 +25,9 @@ struct NoisySensorOptions {
   int merge_bins = 1;                   // detections this close in both range and bearing bins merge into one
   double label_confusion = 0.1;         // the label is replaced by a different one
   double label_softness = 0.3;          // the one-hot label is mixed with a random distribution by this much
-  // The covariance the sensor reports with each detection: above its own error (range: the noise above and
-  // 3.125-unit bins give 1.3-3.1, so 1.1-2.7 times; bearing: noise and 0.049-rad bins give 0.02, 3 times),
-  // a margin for merged neighbours.  The learned sensor reports 5.0 and 0.125 (vertexnav.md appendix);
-  // reporting those here makes association gates so wide that a far corner's detections join its neighbour
-  // and the map draws a wall across the building between them.
+  // The standard deviations the sensor reports with each detection (range in world units, bearing in
+  // radians): what the map's association gates and likelihoods assume.  The defaults sit above the sensor's
+  // own error, with a margin for merged neighbours (README, "The map", says how they were chosen).
   double reported_sigma_range = 3.5;
   double reported_sigma_bearing = 0.06;
   static const core::OptionFields<NoisySensorOptions>& Fields();  // YAML keys (under sensor:) and ranges

@@ -71,9 +71,9 @@ const core::OptionFields<GuidedMazeOptions>& GuidedMazeOptions::Fields() {
 }
 
 void WorldOptions::Validate() const {
-  CheckRanges(labyrinth, LabyrinthOptions::Fields(), "labyrinth.");
-  CheckRanges(office_park, OfficeParkOptions::Fields(), "office_park.");
-  CheckRanges(guided_maze, GuidedMazeOptions::Fields(), "guided_maze.");
+  core::CheckRanges(labyrinth, LabyrinthOptions::Fields(), "labyrinth.");
+  core::CheckRanges(office_park, OfficeParkOptions::Fields(), "office_park.");
+  core::CheckRanges(guided_maze, GuidedMazeOptions::Fields(), "guided_maze.");
   const auto& l = labyrinth;
   Require(l.room_min_cells <= l.room_max_cells, "labyrinth.room_min_cells", l.room_min_cells, "must be <= room_max_cells");
   Require(l.grid_cells >= 2 * l.room_max_cells + 3, "labyrinth.grid_cells", l.grid_cells, "must be >= 2*room_max_cells+3");

@@ -4,6 +4,7 @@
 // or leaving the map (at MCMC calls), a vertex becoming a seen candidate (known_space_candidates), or one of
 // these drifting farther than the tolerance by Kalman updates.  An S_c that grew (or is new) is joined into
 // the union directly; one that shrank makes the union be rebuilt from cached per-block unions.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -41,7 +42,7 @@ class KnownSpace {
   void RebuildUnion(const MapCore& m);
 
   std::vector<Piece> pieces_;                // per observation
-  std::vector<PolygonSet> blocks_;           // union of union_block consecutive pieces
+  std::vector<PolygonSet> blocks_;           // union of kUnionBlock consecutive pieces
   std::vector<char> block_dirty_;
   std::vector<PolygonSet> union_tree_;       // binary tree over the blocks: node k = union of 2k and 2k+1
   std::vector<char> tree_dirty_;

@@ -1,6 +1,7 @@
 # Compares the trials of a results file with a reference results file, trial for trial: every trial of
-# NEW must be in REF with the same success, steps, IoU and distance, digit for digit (a trial is a pure
-# function of its spec, so a refactoring that keeps behaviour keeps every bit).
+# NEW must be in REF with the same success, steps, IoU, distance (in all and per agent), end ("explored", end
+# reason), nudges and give-ups, digit for digit (a trial is a pure function of its spec, so a refactoring that
+# keeps behaviour keeps every bit).
 # Usage: cmake -DNEW=trials.jsonl -DREF=results/search_paper/trials.jsonl [-DMIN_TRIALS=N] -P compare_trials.cmake
 # Used by the paper_trials_reproduce test and by scripts/check_paper_trials.sh.
 if(NOT EXISTS "${NEW}" OR NOT EXISTS "${REF}")
@@ -19,11 +20,12 @@ function(read_trials path prefix)
     if(NOT ok)
       set(${prefix}_${id} "failed run" PARENT_SCOPE)
     else()
-      string(JSON success GET "${line}" success)
-      string(JSON steps GET "${line}" steps)
-      string(JSON iou GET "${line}" iou)
-      string(JSON distance GET "${line}" distance)
-      set(${prefix}_${id} "${success};${steps};${iou};${distance}" PARENT_SCOPE)
+      set(values "")
+      foreach(field success steps iou distance distance_per_agent explored end_reason nudges give_ups)
+        string(JSON v GET "${line}" ${field})
+        list(APPEND values "${v}")
+      endforeach()
+      set(${prefix}_${id} "${values}" PARENT_SCOPE)
     endif()
     list(APPEND ids "${id}")
   endforeach()
@@ -46,7 +48,8 @@ foreach(id IN LISTS new_ids)
   set(a "${new_${id}}")
   set(b "${ref_${id}}")
   if(NOT "${a}" STREQUAL "${b}")
-    message(SEND_ERROR "${id}: success;steps;iou;distance ${a} here, ${b} in the reference")
+    message(SEND_ERROR "${id}: success;steps;iou;distance;distance_per_agent;explored;end_reason;nudges;give_ups\n"
+                       "  here: ${a}\n  reference: ${b}")
     math(EXPR differ "${differ} + 1")
   endif()
 endforeach()
