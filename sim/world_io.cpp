@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -49,6 +50,15 @@ class Reader {
     if (!v.is_array() || v.size() != 2) Fail(where, "expected a point [x, y]");
     return {Number(v[0], where + "[0]"), Number(v[1], where + "[1]")};
   }
+  // Rejects keys of the object 'obj' other than 'keys'.
+  void OnlyKeys(const json& obj, std::initializer_list<const char*> keys, const std::string& where) const {
+    if (!obj.is_object()) Fail(where, "expected an object");
+    for (const auto& item : obj.items()) {
+      bool known = false;
+      for (const char* k : keys) known = known || item.key() == k;
+      if (!known) Fail(where.empty() ? item.key() : where + "." + item.key(), "unknown key");
+    }
+  }
   Ring RingOf(const json& v, const std::string& where) const {
     if (!v.is_array()) Fail(where, "expected a list of points");
     Ring r;
@@ -91,13 +101,8 @@ World WorldFromJson(const std::string& text, const std::string& source) {
   }
   Reader r(source);
   if (!j.is_object()) r.Fail("<top level>", "expected an object");
-  static const char* kKeys[] = {"format", "kind", "seed", "boundary", "obstacles", "clutter", "bounds",
-                                "start", "goal", "guide_path", "guide_path_width"};
-  for (const auto& item : j.items()) {
-    bool known = false;
-    for (const char* k : kKeys) known = known || item.key() == k;
-    if (!known) r.Fail(item.key(), "unknown key");
-  }
+  r.OnlyKeys(j, {"format", "kind", "seed", "boundary", "obstacles", "clutter", "bounds", "start", "goal", "guide_path",
+               "guide_path_width"}, "");
   World w;
   if (j.contains("kind")) {
     const json& k = j["kind"];
@@ -119,6 +124,7 @@ World WorldFromJson(const std::string& text, const std::string& source) {
     if (!cl.is_array()) r.Fail("clutter", "expected a list");
     for (size_t i = 0; i < cl.size(); ++i) {
       const std::string where = "clutter[" + std::to_string(i) + "]";
+      r.OnlyKeys(cl[i], {"shape", "center", "size", "yaw", "height"}, where);
       core::Clutter c;
       const json& shape = r.Key(cl[i], "shape", where);
       if (!shape.is_string() || !core::ParseClutterShape(shape.get<std::string>()))
@@ -133,12 +139,14 @@ World WorldFromJson(const std::string& text, const std::string& source) {
     }
   }
   const json& start = r.Key(j, "start", "");
+  r.OnlyKeys(start, {"x", "y", "yaw"}, "start");
   w.start = {r.Number(r.Key(start, "x", "start"), "start.x"), r.Number(r.Key(start, "y", "start"), "start.y"),
              start.contains("yaw") ? r.Number(start["yaw"], "start.yaw") : 0.0};
   w.goal = r.Point(r.Key(j, "goal", ""), "goal");
   if (j.contains("guide_path")) w.guide_path = r.RingOf(j["guide_path"], "guide_path");
   if (j.contains("guide_path_width")) w.guide_path_width = r.Number(j["guide_path_width"], "guide_path_width");
   if (j.contains("bounds")) {
+    r.OnlyKeys(j["bounds"], {"min", "max"}, "bounds");
     w.bounds = {r.Point(r.Key(j["bounds"], "min", "bounds"), "bounds.min"),
                 r.Point(r.Key(j["bounds"], "max", "bounds"), "bounds.max")};
   } else {  // default: everything the map touches, grown by 10 units
@@ -152,39 +160,6 @@ World WorldFromJson(const std::string& text, const std::string& source) {
     if (core::SignedArea(o) < 0) core::Reverse(o);
   ValidateWorld(w, source);
   return w;
-}
-
-void ValidateWorld(const World& w, const std::string& source) {
-  auto check_ring = [&](const Ring& ring, const std::string& where) {
-    if (ring.size() < 3) throw DataError(source, where + ": a polygon needs at least 3 points");
-    for (const auto& p : ring)
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw DataError(source, where + ": not a finite number");
-    if (!core::IsSimple(ring)) throw DataError(source, where + ": polygon is self-intersecting or degenerate");
-  };
-  if (w.has_boundary()) check_ring(w.boundary, "boundary");
-  for (size_t i = 0; i < w.obstacles.size(); ++i) check_ring(w.obstacles[i], "obstacles[" + std::to_string(i) + "]");
-  if (!w.has_boundary() && w.obstacles.empty()) throw DataError(source, "the world has no boundary and no obstacles");
-  // Rings must not cross, touch or nest (obstacles inside the boundary, not inside each other).
-  auto name = [](int i) { return i < 0 ? std::string("boundary") : "obstacles[" + std::to_string(i) + "]"; };
-  auto touches = [](const Ring& a, const Ring& b) {
-    for (size_t i = 0; i < a.size(); ++i)
-      for (size_t k = 0; k < b.size(); ++k)
-        if (core::SegmentsIntersect({a[i], a[(i + 1) % a.size()]}, {b[k], b[(k + 1) % b.size()]})) return true;
-    return false;
-  };
-  for (size_t i = 0; i < w.obstacles.size(); ++i) {
-    const Ring& o = w.obstacles[i];
-    if (w.has_boundary() && (touches(o, w.boundary) || !core::Contains(w.boundary, o[0])))
-      throw DataError(source, name(int(i)) + ": must lie inside the boundary without touching it");
-    for (size_t k = i + 1; k < w.obstacles.size(); ++k)
-      if (touches(o, w.obstacles[k]) || core::Contains(o, w.obstacles[k][0]) || core::Contains(w.obstacles[k], o[0]))
-        throw DataError(source, name(int(i)) + " and " + name(int(k)) + " overlap or touch");
-  }
-  if (!(w.bounds.max.x > w.bounds.min.x && w.bounds.max.y > w.bounds.min.y))
-    throw DataError(source, "bounds: max must exceed min");
-  if (!core::IsFree(w, w.start.position(), true))
-    throw DataError(source, "start (" + std::to_string(w.start.x) + ", " + std::to_string(w.start.y) +
-                                ") is not in free space");
 }
 
 void SaveWorld(const World& world, const std::string& path) {
