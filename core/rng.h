@@ -9,6 +9,9 @@
 
 namespace toponav::core {
 
+// Seeds a user gives (command line, configs) lie in [0, kMaxSeed], so seed ranges never wrap around.
+constexpr uint64_t kMaxSeed = uint64_t(1) << 62;
+
 // Seed for trial 'trial_index' of an experiment: stable, well mixed, independent of shard or order.
 uint64_t DeriveSeed(uint64_t experiment_seed, uint64_t trial_index);
 

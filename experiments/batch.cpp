@@ -14,12 +14,14 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
 
 #include "core/error.h"
 #include "experiments/draw.h"
+#include "experiments/results_io.h"
 #include "experiments/trial.h"
 #include "sim/worlds.h"
 
@@ -44,7 +46,8 @@ std::vector<TrialId> ListTrials(const BenchOptions& bench, const std::vector<uin
 
 namespace {
 
-json RecordJson(const TrialId& id, const TrialResult* r, const std::string& error) {
+// A trial's record; a failed one says why, and 'signal' (> 0) if its process was killed by one.
+json RecordJson(const TrialId& id, const TrialResult* r, const std::string& error, int signal = 0) {
   json j;
   j["id"] = id.Key();
   j["kind"] = core::ToString(id.kind);
@@ -53,6 +56,7 @@ json RecordJson(const TrialId& id, const TrialResult* r, const std::string& erro
   j["ok"] = r != nullptr;
   if (!r) {
     j["error"] = error;
+    if (signal > 0) j["signal"] = signal;
     return j;
   }
   j["success"] = r->success;
@@ -123,18 +127,9 @@ std::string FormatDuration(double s) {
   return os.str();
 }
 
-// The results files of a directory (its .jsonl files: trials.jsonl and the shards' trials-i-of-N.jsonl), sorted.
-std::vector<fs::path> ResultFiles(const std::string& dir) {
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().extension() == ".jsonl") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 }  // namespace
 
-std::string BatchStamp(const std::string& config_path) {
+std::string BatchStamp(const std::string& config_path, const std::vector<TrialId>& trials) {
   auto fnv = [](std::istream& in) {
     uint64_t h = 1469598103934665603ull;
     char buf[1 << 16];
@@ -148,7 +143,10 @@ std::string BatchStamp(const std::string& config_path) {
   std::ifstream config(config_path, std::ios::binary);
   if (!config) throw core::DataError(config_path, "cannot read the config");
   std::ostringstream os;
-  os << std::hex << "program-" << (program ? fnv(program) : 0) << "-config-" << fnv(config);
+  std::string keys;
+  for (const auto& t : trials) keys += t.Key() + "\n";
+  std::istringstream trial_set(keys);
+  os << std::hex << "program-" << (program ? fnv(program) : 0) << "-config-" << fnv(config) << "-trials-" << fnv(trial_set);
   return os.str();
 }
 
@@ -161,30 +159,36 @@ std::string ResultsFile(const BatchOptions& o) {
   return (fs::path(o.out_dir) / name).string();
 }
 
-// --fresh discards the directory's trials; otherwise only trials of this program and config may be resumed
-// (they are pure functions of program, config and seed).
-void PrepareOutput(const BatchOptions& o) {
-  fs::create_directories(o.out_dir);
-  const std::string stamp_file = (fs::path(o.out_dir) / "batch-stamp.txt").string();
-  if (o.fresh) {
-    for (const auto& f : ResultFiles(o.out_dir)) fs::remove(f);
-    fs::remove(stamp_file);
-  }
+// --fresh discards this shard's own results file; otherwise only trials of the same program, config and
+// trial set may be resumed (they are pure functions of them), and a directory holding another batch's
+// results is refused.
+void PrepareOutput(const BatchOptions& o, const std::string& own_file) {
+  if (o.fresh) fs::remove(own_file);
   if (o.stamp.empty()) return;
-  std::string old;
-  if (std::ifstream in(stamp_file); in) std::getline(in, old);
-  if (!ResultFiles(o.out_dir).empty() && old != o.stamp)
-    throw core::DataError(stamp_file, old.empty() ? "the directory holds trials of an unknown build or config (no stamp): "
-                                                    "use another --out, or --fresh to discard them"
-                                                  : "the directory's trials came from another build or config (stamp " + old +
-                                                        ", now " + o.stamp + "): use another --out, or --fresh to discard them");
-  std::ofstream(stamp_file) << o.stamp << "\n";
+  const std::string old = ReadStamp(o.out_dir);
+  if (old == o.stamp) return;
+  std::vector<std::string> held;  // results files with trials in them
+  for (const auto& f : BatchResultsFiles(o.out_dir))
+    if (fs::file_size(f) > 0) held.push_back(f.filename().string());
+  if (!held.empty()) {
+    const std::string what = old.empty() ? "trials of an unknown build, config or trial set (no stamp)"
+                                         : "trials of another build, config or trial set (stamp " + old + ", now " + o.stamp + ")";
+    const bool only_own = held.size() == 1 && held[0] == fs::path(own_file).filename().string();
+    std::string files;
+    for (const auto& h : held) files += (files.empty() ? "" : ", ") + h;
+    throw core::DataError((fs::path(o.out_dir) / "batch-stamp.txt").string(),
+                          "the directory holds " + what + " in " + files +
+                              (only_own ? ": use another --out, or --fresh to discard them"
+                                        : ": use another --out (--fresh discards only this shard's own file)"));
+  }
+  WriteStamp(o.out_dir, o.stamp);
 }
 
 // This shard's trials that the directory does not hold yet (at most max_new_trials).
 std::vector<TrialId> PendingTrials(const BatchOptions& o, const std::vector<TrialId>& all, BatchSummary* summary) {
-  std::set<std::string> done;
-  for (const auto& r : ReadResults({o.out_dir})) done.insert(r.id.Key());
+  std::set<std::string> done;  // a trial whose process was killed by a signal is run again
+  for (const auto& r : ReadResults({o.out_dir}))
+    if (r.signal == 0) done.insert(r.id.Key());
   std::vector<TrialId> todo;
   for (size_t k = 0; k < all.size(); ++k) {
     if (int(k % size_t(o.shard_count)) != o.shard_index) continue;
@@ -194,23 +198,6 @@ std::vector<TrialId> PendingTrials(const BatchOptions& o, const std::vector<Tria
   }
   if (o.max_new_trials >= 0 && int(todo.size()) > o.max_new_trials) todo.resize(size_t(o.max_new_trials));
   return todo;
-}
-
-// Opens the results file for appending; a run killed mid-write left a partial last line: close it so the next
-// record starts on its own line.
-std::ofstream OpenResults(const std::string& file) {
-  bool ends_cleanly = true;
-  {
-    std::ifstream prev(file, std::ios::binary | std::ios::ate);
-    if (prev && prev.tellg() > 0) {
-      prev.seekg(-1, std::ios::end);
-      ends_cleanly = prev.get() == '\n';
-    }
-  }
-  std::ofstream out(file, std::ios::app);
-  if (!out) throw core::DataError(file, "cannot open for appending");
-  if (!ends_cleanly) out << "\n";
-  return out;
 }
 
 struct Child {
@@ -245,9 +232,9 @@ json Collect(Child& c, int status) {
     if (!c.buffer.empty() && c.buffer.back() == '\n') return json::parse(c.buffer);
   } catch (const json::exception&) {
   }
-  const std::string why = WIFSIGNALED(status) ? "crashed with signal " + std::to_string(WTERMSIG(status))
-                                              : "exited with status " + std::to_string(WEXITSTATUS(status)) + " and no result";
-  return RecordJson(c.id, nullptr, why);
+  if (WIFSIGNALED(status))  // killed (out of memory, pre-empted) or crashed: retried on resume
+    return RecordJson(c.id, nullptr, "killed by signal " + std::to_string(WTERMSIG(status)), WTERMSIG(status));
+  return RecordJson(c.id, nullptr, "exited with status " + std::to_string(WEXITSTATUS(status)) + " and no result");
 }
 
 class Progress {
@@ -274,11 +261,23 @@ class Progress {
 
 // Runs 'todo' in forked workers, appending one whole line per finished trial (a kill loses at most the
 // running ones).
-void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<TrialId>& todo, std::ofstream& out,
+void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<TrialId>& todo, ResultsAppender& out,
                 BatchSummary* summary) {
   const int workers = o.workers > 0 ? o.workers : std::max(1u, std::thread::hardware_concurrency());
   const Progress progress(o, todo.size());
-  std::vector<Child> running;
+  std::vector<Child> running;  // pid -1: finished, removed after each sweep
+  // A failed write stops the batch: the running trials are stopped too (they are redone on resume).
+  struct StopOnThrow {
+    std::vector<Child>& running;
+    ~StopOnThrow() {
+      for (const auto& c : running) {
+        if (c.pid < 0) continue;
+        ::kill(c.pid, SIGKILL);
+        ::waitpid(c.pid, nullptr, 0);
+        ::close(c.fd);
+      }
+    }
+  } stop{running};
   size_t next = 0;
   while (next < todo.size() || !running.empty()) {
     while (next < todo.size() && int(running.size()) < workers) running.push_back(Spawn(config, o, todo[next++]));
@@ -286,7 +285,6 @@ void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<T
     std::vector<pollfd> pfds;
     for (const auto& c : running) pfds.push_back({c.fd, POLLIN, 0});
     ::poll(pfds.data(), nfds_t(pfds.size()), 200);
-    std::vector<Child> still;
     for (size_t i = 0; i < running.size(); ++i) {
       Child& c = running[i];
       char buf[4096];
@@ -294,18 +292,16 @@ void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<T
       while ((pfds[i].revents & (POLLIN | POLLHUP)) && (n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
       int status = 0;
       const pid_t w = ::waitpid(c.pid, &status, WNOHANG);
-      if (w == 0) {
-        still.push_back(std::move(c));
-        continue;
-      }
+      if (w == 0) continue;        // still running
       if (w < 0) status = 0x7f00;  // cannot be waited for (e.g. SIGCHLD ignored): give up on it, read what it wrote
-      const json j = Collect(c, status);
+      const json j = Collect(c, status);  // (closes its pipe)
+      c.pid = -1;
+      out.Append(j.dump());
       if (!j.value("ok", false)) ++summary->failed;
-      out << j.dump() << "\n" << std::flush;
       ++summary->ran;
       progress.Report(*summary);
     }
-    running = std::move(still);
+    running.erase(std::remove_if(running.begin(), running.end(), [](const Child& c) { return c.pid < 0; }), running.end());
   }
 }
 
@@ -315,49 +311,84 @@ BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::ve
   const auto t0 = std::chrono::steady_clock::now();
   TOPONAV_CHECK(o.shard_count >= 1 && o.shard_index >= 0 && o.shard_index < o.shard_count,
                 "shard " << o.shard_index << "/" << o.shard_count);
-  PrepareOutput(o);
+  fs::create_directories(o.out_dir);
   BatchSummary summary;
   summary.results_file = ResultsFile(o);
+  const BatchLock lock(o.out_dir, fs::path(summary.results_file).filename().string());
+  PrepareOutput(o, summary.results_file);
   const std::vector<TrialId> todo = PendingTrials(o, all, &summary);
-  std::ofstream out = OpenResults(summary.results_file);
+  ResultsAppender out(summary.results_file);
   RunWorkers(config, o, todo, out, &summary);
   summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return summary;
 }
 
-std::vector<TrialRecord> ReadResults(const std::vector<std::string>& dirs) {
-  std::map<std::string, TrialRecord> by_key;
+namespace {
+
+// A record with every key a report needs, of the right type; nullopt (and 'why') otherwise.
+std::optional<TrialRecord> ParseRecord(const std::string& line, std::string* why) {
+  try {
+    const json j = json::parse(line);
+    TrialRecord r;
+    const auto kind = core::ParseWorldKind(j.at("kind").get<std::string>());
+    if (!kind) {
+      *why = "unknown kind";
+      return std::nullopt;
+    }
+    r.id = {*kind, j.at("agents").get<int>(), j.at("seed").get<uint64_t>()};
+    if (j.at("id").get<std::string>() != r.id.Key()) {
+      *why = "its id does not match its kind, agents and seed";
+      return std::nullopt;
+    }
+    r.ok = j.at("ok").get<bool>();
+    if (!r.ok) {
+      r.error = j.at("error").get<std::string>();
+      r.signal = j.value("signal", 0);
+      return r;
+    }
+    r.success = j.at("success").get<bool>();
+    r.explored = j.at("explored").get<bool>();
+    r.steps = j.at("steps").get<int>();
+    r.iou = j.at("iou").get<double>();
+    r.distance = j.at("distance").get<double>();
+    r.wall_time_s = j.at("wall_time_s").get<double>();
+    r.end_reason = j.at("end_reason").get<std::string>();
+    return r;
+  } catch (const json::exception& e) {
+    *why = line.empty() || line.back() != '}' ? "a partial line (a run killed while writing it?)" : e.what();
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::vector<TrialRecord> ReadResults(const std::vector<std::string>& dirs, std::vector<std::string>* skipped) {
+  std::map<std::string, TrialRecord> by_key;  // the last record of a trial wins (a retry after a signal)
   for (const auto& dir : dirs) {
     if (!fs::is_directory(dir)) throw core::DataError(dir, "not a directory");
-    for (const auto& f : ResultFiles(dir)) {
+    for (const auto& f : BatchResultsFiles(dir)) {
       std::ifstream in(f);
-      std::string line;
-      while (std::getline(in, line)) {
-        try {
-          const json j = json::parse(line);
-          TrialRecord r;
-          const auto kind = core::ParseWorldKind(j.at("kind").get<std::string>());
-          if (!kind) continue;
-          r.id = {*kind, j.at("agents").get<int>(), j.at("seed").get<uint64_t>()};
-          r.ok = j.at("ok").get<bool>();
-          r.error = j.value("error", "");
-          r.success = j.value("success", false);
-          r.explored = j.value("explored", false);
-          r.steps = j.value("steps", 0);
-          r.iou = j.value("iou", 0.0);
-          r.distance = j.value("distance", 0.0);
-          r.wall_time_s = j.value("wall_time_s", 0.0);
-          r.end_reason = j.value("end_reason", "");
-          by_key[r.id.Key()] = r;
-        } catch (const json::exception&) {
-          // a half-written line from a killed run
-        }
+      std::string line, why;
+      for (int n = 1; std::getline(in, line); ++n) {
+        if (line.empty()) continue;
+        if (auto r = ParseRecord(line, &why)) by_key[r->id.Key()] = *r;
+        else if (skipped) skipped->push_back(f.string() + ":" + std::to_string(n) + ": skipped: " + why);
       }
     }
   }
   std::vector<TrialRecord> out;
   for (auto& [k, r] : by_key) out.push_back(r);
   return out;
+}
+
+void CheckOneBatch(const std::vector<std::string>& dirs) {
+  for (size_t i = 1; i < dirs.size(); ++i) {
+    const std::string a = ReadStamp(dirs[0]), b = ReadStamp(dirs[i]);
+    if (a != b)
+      throw core::DataError(dirs[i], "its trials come from another build, config or trial set than " + dirs[0] + "'s (stamp " +
+                                         (b.empty() ? "none" : b) + " against " + (a.empty() ? "none" : a) +
+                                         "): report them separately");
+  }
 }
 
 std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records) {

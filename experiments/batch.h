@@ -31,10 +31,10 @@ struct BatchOptions {
   bool progress = true;         // progress and ETA on stderr
   std::string fail_key;         // testing: this trial throws
   std::string crash_key;        // testing: this trial's process crashes (SIGSEGV)
-  // What produced the trials (the program and the config): written to DIR/batch-stamp.txt; resuming a
-  // directory whose stamp differs is an error (its trials came from another build or config).  Empty: no check.
+  // What produced the trials (the program, the config, the trial set): written to DIR/batch-stamp.txt; a
+  // directory holding results of another stamp is an error.  Empty: no check.
   std::string stamp;
-  bool fresh = false;           // discard the directory's trials (and stamp) first
+  bool fresh = false;           // discard this shard's own results file first
 };
 
 struct BatchSummary {
@@ -48,14 +48,16 @@ struct BatchSummary {
 
 BatchSummary RunBatch(const Config& config, const BatchOptions& options, const std::vector<TrialId>& trials);
 
-// A stamp for BatchOptions::stamp: a hash of the running program's file and of the config file's text.
-std::string BatchStamp(const std::string& config_path);
+// A stamp for BatchOptions::stamp: a hash of the running program's file, the config file's text and the
+// batch's trial set (so an output directory holds one batch).
+std::string BatchStamp(const std::string& config_path, const std::vector<TrialId>& trials);
 
 // One line of a results file.
 struct TrialRecord {
   TrialId id;
   bool ok = false;          // false: the trial threw or crashed ('error' says how)
   std::string error;
+  int signal = 0;           // > 0: its process was killed by this signal (retried on resume)
   bool success = false;
   bool explored = false;
   int steps = 0;
@@ -65,9 +67,13 @@ struct TrialRecord {
   std::string end_reason;
 };
 
-// All records of the *.jsonl files in 'dirs' (one per trial key; malformed lines, e.g. a half-written last
-// line of a killed run, are skipped).
-std::vector<TrialRecord> ReadResults(const std::vector<std::string>& dirs);
+// All records of the batch results files in 'dirs' (one per trial key, the last one written).  Lines that
+// are not complete records (a half-written last line of a killed run, a record missing a key) are skipped
+// and, if 'skipped' is given, listed there as "FILE:LINE: skipped: why".
+std::vector<TrialRecord> ReadResults(const std::vector<std::string>& dirs, std::vector<std::string>* skipped = nullptr);
+// Throws core::DataError unless every directory's stamp is the same (merging shards of one batch is fine;
+// mixing builds, configs or trial sets would make one table of trials that do not belong together).
+void CheckOneBatch(const std::vector<std::string>& dirs);
 
 struct ReportRow {
   core::WorldKind kind = core::WorldKind::kLabyrinth;

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/geometry.h"
+#include "core/rng.h"
 #include "experiments/internal/yaml_reader.h"
 
 namespace toponav::experiments {
@@ -85,6 +86,11 @@ void ValidateAcrossSections(const Config& c) {
     throw core::ConfigError(c.source, "planning.clearance", std::to_string(c.planning.clearance),
                             "must be in [motion.agent_radius + 0.25, 0.9 * planning.inflation_radius] = [" +
                                 std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  if (c.bench.first_seed > core::kMaxSeed - uint64_t(c.bench.num_seeds))
+    throw core::ConfigError(c.source, "bench.first_seed", std::to_string(c.bench.first_seed),
+                            "first_seed + num_seeds must stay within [0, " + std::to_string(core::kMaxSeed) + "]");
+  if (c.demo.seed > core::kMaxSeed)
+    throw core::ConfigError(c.source, "demo.seed", std::to_string(c.demo.seed), "must be in [0, " + std::to_string(core::kMaxSeed) + "]");
   if (c.demo.kinds.empty()) throw core::ConfigError(c.source, "demo.kinds", "[]", "list at least one world kind");
   for (auto k : c.demo.kinds)
     if (k == core::WorldKind::kCustom)

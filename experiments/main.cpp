@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "experiments/batch.h"
+#include "experiments/cli_parse.h"
 #include "experiments/experiments.h"
 #include "learning/learning.h"
 #include "mapping/polygon_set.h"
@@ -27,40 +28,6 @@ double MsSince(Clock::time_point t0) {
 }
 
 // "x,y,yaw" -> pose
-core::Pose2 ParsePose(const std::string& text) {
-  core::Pose2 p;
-  char c1 = 0, c2 = 0;
-  std::istringstream is(text);
-  if (!(is >> p.x >> c1 >> p.y >> c2 >> p.yaw) || c1 != ',' || c2 != ',' || !is.eof())
-    throw core::ConfigError("<command line>", "--pose", text, "expected x,y,yaw (numbers, yaw in radians)");
-  return p;
-}
-
-// "N" or "A-B" (inclusive) -> seeds
-std::vector<uint64_t> ParseSeeds(const std::string& text) {
-  std::vector<uint64_t> seeds;
-  const auto dash = text.find('-');
-  try {
-    size_t used = 0;
-    if (dash == std::string::npos) {
-      if (text.empty() || text[0] == '-' || text[0] == '+') throw std::invalid_argument(text);
-      seeds.push_back(std::stoull(text, &used));
-      if (used != text.size()) throw std::invalid_argument(text);
-    } else {
-      const std::string first = text.substr(0, dash), second = text.substr(dash + 1);
-      size_t used2 = 0;
-      if (first.empty() || second.empty() || first[0] == '-' || second[0] == '-') throw std::invalid_argument(text);
-      const uint64_t a = std::stoull(first, &used);
-      const uint64_t b = std::stoull(second, &used2);
-      if (used != first.size() || used2 != second.size() || b < a || b - a > 1000000) throw std::invalid_argument(text);
-      for (uint64_t s = a; s <= b; ++s) seeds.push_back(s);
-    }
-  } catch (const std::exception&) {
-    throw core::ConfigError("<command line>", "--seeds", text, "expected N or A-B with A <= B");
-  }
-  return seeds;
-}
-
 core::WorldKind ParseKind(const std::string& text) {
   auto k = core::ParseWorldKind(text);
   if (!k || *k == core::WorldKind::kCustom)
@@ -99,7 +66,7 @@ nlohmann::json ObservationJson(const core::Pose2& pose, const std::vector<sim::V
 // Where a command's world comes from: a file, or a generator kind and seed (with an optional config).
 struct WorldSource {
   std::string world_file, kind, config, pose;
-  uint64_t seed = 0;
+  std::string seed = "0";  // parsed strictly (experiments::ParseSeed)
 };
 
 void AddWorldSourceOptions(CLI::App* cmd, WorldSource* src, const std::string& config_help) {
@@ -110,9 +77,19 @@ void AddWorldSourceOptions(CLI::App* cmd, WorldSource* src, const std::string& c
   cmd->add_option("--pose", src->pose, "Agent pose x,y,yaw (world units, radians); default: the world's start");
 }
 
+// The world with its start moved to --pose (trial, map), which must lie in free space.
+core::World StartAtPose(core::World w, const std::string& pose) {
+  if (pose.empty()) return w;
+  const core::Pose2 p = experiments::ParsePose(pose);
+  if (!w.bounds.Contains(p.position()) || !core::IsFree(w, p.position(), true))
+    throw core::ConfigError("<command line>", "--pose", pose, "must lie in the world's free space");
+  w.start = p;
+  return w;
+}
+
 core::World WorldFromSource(const WorldSource& src, const experiments::Config& cfg) {
   if (!src.world_file.empty()) return sim::LoadWorld(src.world_file);
-  if (!src.kind.empty()) return sim::GenerateWorld(ParseKind(src.kind), cfg.worlds, src.seed);
+  if (!src.kind.empty()) return sim::GenerateWorld(ParseKind(src.kind), cfg.worlds, experiments::ParseSeed(src.seed));
   throw core::ConfigError("<command line>", "--world", "", "give --world FILE or --kind K --seed N");
 }
 
@@ -136,7 +113,7 @@ int RunWorld(const WorldArgs& a) {
   }
   if (a.kind.empty()) throw core::ConfigError("<command line>", "--kind", "", "give --kind or --world");
   const core::WorldKind kind = ParseKind(a.kind);
-  const std::vector<uint64_t> seeds = ParseSeeds(a.seeds);
+  const std::vector<uint64_t> seeds = experiments::ParseSeeds(a.seeds);
   int failures = 0;
   double total_ms = 0;
   for (uint64_t seed : seeds) {
@@ -178,7 +155,7 @@ struct ObserveArgs : WorldSource {
 int RunObserve(const ObserveArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
   const core::World w = WorldFromSource(a, cfg);
-  const core::Pose2 pose = a.pose.empty() ? w.start : ParsePose(a.pose);
+  const core::Pose2 pose = StartAtPose(w, a.pose).start;
   const sim::RayCaster caster(w);
   const double range = a.max_range > 0 ? a.max_range : std::numeric_limits<double>::infinity();
   const auto visible = caster.VisibleVertices(pose, range);
@@ -222,7 +199,7 @@ int RunRender(const RenderArgs& a) {
                cfg.render.height, total_ms / double(panos.size()));
     return 0;
   }
-  const core::Pose2 pose = a.pose.empty() ? w.start : ParsePose(a.pose);
+  const core::Pose2 pose = StartAtPose(w, a.pose).start;
   const int outputs = sim::kRenderRgb | (a.depth.empty() ? 0 : sim::kRenderDepth) | (a.ids.empty() ? 0 : sim::kRenderIds);
   const auto t0 = Clock::now();
   const sim::Panorama pano = renderer.Render(pose, outputs);
@@ -254,12 +231,13 @@ int RunMap(MapArgs a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
   if (a.no_mcmc) a.drive.mcmc_every = 0;
   EnsureDir(a.out);
-  const std::vector<uint64_t> seeds = a.seeds.empty() ? std::vector<uint64_t>{a.seed} : ParseSeeds(a.seeds);
+  const std::vector<uint64_t> seeds =
+      a.seeds.empty() ? std::vector<uint64_t>{experiments::ParseSeed(a.seed)} : experiments::ParseSeeds(a.seeds);
   double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0;
   for (uint64_t seed : seeds) {
     WorldSource src = a;
-    src.seed = seed;
-    const core::World w = WorldFromSource(src, cfg);
+    src.seed = std::to_string(seed);
+    const core::World w = StartAtPose(WorldFromSource(src, cfg), a.pose);
     experiments::MapDriveOptions d = a.drive;
     d.seed = seed;
     const auto t0 = Clock::now();
@@ -313,7 +291,8 @@ struct TrialArgs : WorldSource {
 
 int RunTrialCommand(const TrialArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
-  const core::World w = WorldFromSource(a, cfg);
+  const uint64_t seed = experiments::ParseSeed(a.seed);
+  const core::World w = StartAtPose(WorldFromSource(a, cfg), a.pose);
   EnsureDir(a.out);
   mapping::MapView view;
   experiments::TrialOptions t = a.trial;
@@ -357,7 +336,7 @@ int RunTrialCommand(const TrialArgs& a) {
       plan_targets.clear();
       plan_goals.clear();
     };
-  const auto r = experiments::RunSearchTrial(w, cfg, t, a.seed, &view);
+  const auto r = experiments::RunSearchTrial(w, cfg, t, seed, &view);
   if (video) fmt::print("wrote {} ({} frames)\n", a.video, video->frames());
   if (trace.is_open()) fmt::print("wrote {} ({} steps)\n", a.trace, r.steps);
   experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string());
@@ -365,7 +344,7 @@ int RunTrialCommand(const TrialArgs& a) {
   for (double d : r.distance) total += d;
   fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, "
              "frontiers given up {}, {:.1f} s -> {}\n",
-             a.seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
+             seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
              r.give_ups, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
   return 0;
 }
@@ -373,7 +352,10 @@ int RunTrialCommand(const TrialArgs& a) {
 // ---------------------------------------------------------------- bench and report
 
 int RunReport(const std::vector<std::string>& dirs, std::string out) {
-  const auto records = experiments::ReadResults(dirs);
+  experiments::CheckOneBatch(dirs);
+  std::vector<std::string> skipped;
+  const auto records = experiments::ReadResults(dirs, &skipped);
+  for (const auto& s : skipped) std::cerr << "warning: " << s << "\n";
   if (records.empty()) throw core::DataError(dirs.front(), "no trial results (*.jsonl) found");
   const auto rows = experiments::Summarize(records);
   if (out.empty()) out = dirs.front();
@@ -398,20 +380,10 @@ int RunBench(BenchArgs a) {
   if (cfg.bench.rows.empty()) throw core::ConfigError(a.config, "bench.rows", "[]", "list at least one row");
   a.batch.out_dir = a.out.empty() ? "results/" + cfg.bench.name : a.out;
   a.batch.progress = !a.quiet;
-  a.batch.stamp = experiments::BatchStamp(a.config);
-  if (!a.shard.empty()) {
-    const auto slash = a.shard.find('/');
-    try {
-      if (slash == std::string::npos) throw std::invalid_argument(a.shard);
-      a.batch.shard_index = std::stoi(a.shard.substr(0, slash));
-      a.batch.shard_count = std::stoi(a.shard.substr(slash + 1));
-    } catch (const std::exception&) {
-      throw core::ConfigError("<command line>", "--shard", a.shard, "expected i/N");
-    }
-    if (a.batch.shard_count < 1 || a.batch.shard_index < 0 || a.batch.shard_index >= a.batch.shard_count)
-      throw core::ConfigError("<command line>", "--shard", a.shard, "expected 0 <= i < N");
-  }
-  const auto trials = experiments::ListTrials(cfg.bench, a.seeds.empty() ? std::vector<uint64_t>{} : ParseSeeds(a.seeds));
+  if (!a.shard.empty()) experiments::ParseShard(a.shard, &a.batch.shard_index, &a.batch.shard_count);
+  const auto trials =
+      experiments::ListTrials(cfg.bench, a.seeds.empty() ? std::vector<uint64_t>{} : experiments::ParseSeeds(a.seeds));
+  a.batch.stamp = experiments::BatchStamp(a.config, trials);
   fmt::print("toponav bench {}: {} trials ({} rows), results in {}\n", cfg.bench.name, trials.size(), cfg.bench.rows.size(),
              a.batch.out_dir);
   const auto s = experiments::RunBatch(cfg, a.batch, trials);

@@ -3,11 +3,16 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "experiments/results_io.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 
 namespace toponav::experiments {
@@ -140,6 +145,138 @@ TEST(Batch, SeedOverrideReplacesTheConfigSeeds) {
   ASSERT_EQ(trials.size(), 4u);
   EXPECT_EQ(trials[0].Key(), "labyrinth/a1/s500");
   EXPECT_EQ(trials[3].Key(), "guided_maze/a3/s501");
+}
+
+std::string ErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const core::DataError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(BatchReliability, FreshRemovesOnlyThisShardsOwnResultsFile) {
+  const Config cfg = TinyBench();
+  const auto trials = ListTrials(cfg.bench);
+  BatchOptions o = QuietBatch("fresh_own");
+  o.stamp = "stamp-a";
+  o.shard_count = 2;
+  o.max_new_trials = 1;
+  RunBatch(cfg, o, trials);  // shard 0
+  o.shard_index = 1;
+  RunBatch(cfg, o, trials);  // shard 1
+  std::ofstream(fs::path(o.out_dir) / "my_notes.jsonl") << "{\"mine\": true}\n";
+  o.shard_index = 0;
+  o.fresh = true;
+  o.max_new_trials = 0;
+  RunBatch(cfg, o, trials);
+  EXPECT_FALSE(fs::exists(fs::path(o.out_dir) / "trials-0-of-2.jsonl") && fs::file_size(fs::path(o.out_dir) / "trials-0-of-2.jsonl") > 0);
+  EXPECT_TRUE(fs::exists(fs::path(o.out_dir) / "trials-1-of-2.jsonl")) << "the other shard's trials stay";
+  EXPECT_TRUE(fs::exists(fs::path(o.out_dir) / "my_notes.jsonl")) << "a file the user put there stays";
+  EXPECT_EQ(ReadResults({o.out_dir}).size(), 1u) << "and is never read as results";
+  // Another build's stamp: --fresh cannot discard the other shard's file, so the run is refused.
+  o.stamp = "stamp-b";
+  EXPECT_NE(ErrorOf([&] { RunBatch(cfg, o, trials); }).find("trials-1-of-2.jsonl"), std::string::npos);
+}
+
+TEST(BatchReliability, AFullDiskStopsTheRunWithAnErrorAndKeepsWhatWasWritten) {
+  const Config cfg = TinyBench();
+  const auto trials = ListTrials(cfg.bench);
+  BatchOptions o = QuietBatch("disk_full");
+  o.stamp = "stamp-a";
+  fs::create_directories(o.out_dir);
+  // The stamp cannot be written: an error, and no empty stamp is left behind to block the next run.
+  fs::create_symlink("/dev/full", fs::path(o.out_dir) / ".batch-stamp.txt.tmp");
+  EXPECT_NE(ErrorOf([&] { RunBatch(cfg, o, trials); }).find("batch-stamp.txt"), std::string::npos);
+  EXPECT_EQ(ReadStamp(o.out_dir), "");
+  fs::remove(fs::path(o.out_dir) / ".batch-stamp.txt.tmp");
+  o.max_new_trials = 2;
+  EXPECT_EQ(RunBatch(cfg, o, trials).ran, 2);
+  // The results file cannot grow (a file-size limit stands in for a full disk: writes fail the same way):
+  // the write error stops the run, naming the file.
+  const fs::path results = fs::path(o.out_dir) / "trials.jsonl";
+  const auto size = fs::file_size(results);
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limited = old;
+  limited.rlim_cur = rlim_t(size + 40);  // room for part of one more record
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limited), 0);
+  o.max_new_trials = -1;
+  const std::string e = ErrorOf([&] { RunBatch(cfg, o, trials); });
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_NE(e.find("trials.jsonl"), std::string::npos) << e;
+  EXPECT_NE(e.find("cannot write a result"), std::string::npos) << e;
+  // With space again, the two trials written before are intact (the partial line is skipped) and the rest
+  // is run.
+  const BatchSummary s = RunBatch(cfg, o, trials);
+  EXPECT_EQ(s.already_done, 2);
+  EXPECT_EQ(s.ran, 4);
+}
+
+TEST(BatchReliability, ATrialKilledByASignalIsRetriedOnResumeAndAThrowingOneIsNot) {
+  const Config cfg = TinyBench();
+  const auto trials = ListTrials(cfg.bench);
+  BatchOptions o = QuietBatch("signal");
+  o.fail_key = trials[1].Key();
+  o.crash_key = trials[4].Key();
+  EXPECT_EQ(RunBatch(cfg, o, trials).failed, 2);
+  o.fail_key.clear();
+  o.crash_key.clear();
+  const BatchSummary s = RunBatch(cfg, o, trials);
+  EXPECT_EQ(s.ran, 1) << "only the killed trial runs again";
+  EXPECT_EQ(s.already_done, 5);
+  for (const auto& r : ReadResults({o.out_dir})) {
+    if (r.id.Key() == trials[4].Key()) EXPECT_TRUE(r.ok) << "the retry's record replaces the kill's";
+    if (r.id.Key() == trials[1].Key()) EXPECT_FALSE(r.ok) << "a deterministic throw stays recorded as failed";
+  }
+}
+
+TEST(BatchReliability, ASecondWriterOfTheSameResultsIsRefused) {
+  const Config cfg = TinyBench();
+  const auto trials = ListTrials(cfg.bench);
+  BatchOptions o = QuietBatch("lock");
+  fs::create_directories(o.out_dir);
+  const BatchLock held(o.out_dir, "trials.jsonl");
+  EXPECT_NE(ErrorOf([&] { RunBatch(cfg, o, trials); }).find("another toponav bench"), std::string::npos);
+  BatchOptions shard = o;
+  shard.shard_count = 2;
+  shard.max_new_trials = 1;
+  EXPECT_EQ(RunBatch(cfg, shard, trials).ran, 1) << "another shard's file has its own lock";
+}
+
+TEST(BatchReliability, IncompleteRecordsAreReportedSkippedAndRedone) {
+  const Config cfg = TinyBench();
+  const auto trials = ListTrials(cfg.bench);
+  BatchOptions o = QuietBatch("incomplete");
+  o.max_new_trials = 1;
+  RunBatch(cfg, o, trials);
+  std::ofstream(fs::path(o.out_dir) / "trials.jsonl", std::ios::app)
+      << R"({"id": "labyrinth/a1/s21", "kind": "labyrinth", "agents": 1, "seed": 21, "ok": true, "success": true})" << "\n";
+  std::vector<std::string> skipped;
+  EXPECT_EQ(ReadResults({o.out_dir}, &skipped).size(), 1u);
+  ASSERT_EQ(skipped.size(), 1u);
+  EXPECT_NE(skipped[0].find("trials.jsonl:2"), std::string::npos) << skipped[0];
+  o.max_new_trials = -1;
+  EXPECT_EQ(RunBatch(cfg, o, trials).ran, 5) << "the incomplete trial is run properly";
+}
+
+TEST(BatchReliability, ReportsRefuseDirectoriesOfDifferentBatchesAndAcceptShardsOfOne) {
+  const Config cfg = TinyBench();
+  const auto trials = ListTrials(cfg.bench);
+  BatchOptions a = QuietBatch("mix_a"), b = QuietBatch("mix_b"), c = QuietBatch("mix_c");
+  a.stamp = b.stamp = "stamp-a";
+  c.stamp = "stamp-c";
+  a.max_new_trials = b.max_new_trials = c.max_new_trials = 1;
+  a.shard_count = b.shard_count = 2;
+  b.shard_index = 1;
+  for (const auto* o : {&a, &b, &c}) RunBatch(cfg, *o, trials);
+  EXPECT_NO_THROW(CheckOneBatch({a.out_dir, b.out_dir}));
+  EXPECT_NE(ErrorOf([&] { CheckOneBatch({a.out_dir, c.out_dir}); }).find("report them separately"), std::string::npos);
+  EXPECT_NE(BatchStamp("tests/../CMakeLists.txt", trials), BatchStamp("tests/../CMakeLists.txt", ListTrials(cfg.bench, {1})))
+      << "another trial set is another batch";
 }
 
 }  // namespace
