@@ -39,6 +39,14 @@ experiments::Config LoadOrDefault(const std::string& path) {
   return path.empty() ? experiments::Config{} : experiments::LoadConfig(path);
 }
 
+// Writes 'text' to 'path', checked: a full disk is an error naming the file, not an empty file.
+void WriteTextFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.flush();
+  if (!out) throw core::DataError(path, "cannot write the file (disk full?)");
+}
+
 void EnsureDir(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -104,12 +112,17 @@ int RunWorld(const WorldArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
   EnsureDir(a.out);
   if (!a.world_file.empty()) {
-    const core::World w = sim::LoadWorld(a.world_file);
-    const std::string png = (fs::path(a.out) / "world.png").string();
-    experiments::DrawWorldPicture(w, cfg.picture, png);
-    fmt::print("read {} ({} vertices, {} clutter items)\nwrote {}\n", a.world_file, core::MapVertices(w).size(),
-               w.clutter.size(), png);
-    return 0;
+    const core::World w = sim::LoadWorld(a.world_file);  // (validated: a file that loads can be run)
+    fmt::print("read {} ({} vertices, {} clutter items)\n", a.world_file, core::MapVertices(w).size(), w.clutter.size());
+    if (!a.no_png) {
+      const std::string png = (fs::path(a.out) / "world.png").string();
+      experiments::DrawWorldPicture(w, cfg.picture, png);
+      fmt::print("wrote {}\n", png);
+    }
+    if (!a.check) return 0;
+    const auto problems = experiments::CheckWorld(w, cfg.worlds);
+    for (const auto& p : problems) fmt::print("  PROBLEM: {}\n", p);
+    return problems.empty() ? 0 : 3;
   }
   if (a.kind.empty()) throw core::ConfigError("<command line>", "--kind", "", "give --kind or --world");
   const core::WorldKind kind = ParseKind(a.kind);
@@ -260,7 +273,7 @@ int RunMap(MapArgs a) {
     j["mean_update_ms"] = r.mean_update_ms;
     j["mean_mcmc_ms"] = r.mean_mcmc_ms;
     j["wall_time_ms"] = ms;
-    std::ofstream((fs::path(a.out) / (stem + ".json")).string()) << j.dump(1) << "\n";
+    WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), j.dump(1) + "\n");
     fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
                "walls {:>3} ({} false)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
                seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
@@ -361,8 +374,8 @@ int RunReport(const std::vector<std::string>& dirs, std::string out) {
   if (out.empty()) out = dirs.front();
   EnsureDir(out);
   const std::string md = experiments::MarkdownTable(rows);
-  std::ofstream((fs::path(out) / "report.md").string()) << md;
-  std::ofstream((fs::path(out) / "report.csv").string()) << experiments::CsvTable(rows);
+  WriteTextFile((fs::path(out) / "report.md").string(), md);
+  WriteTextFile((fs::path(out) / "report.csv").string(), experiments::CsvTable(rows));
   experiments::WriteStepsPlot(records, (fs::path(out) / "steps.png").string());
   fmt::print("{}\n{} trials from {} director{}; wrote {}/report.md, report.csv, steps.png\n", md, records.size(),
              dirs.size(), dirs.size() == 1 ? "y" : "ies", out);

@@ -57,6 +57,7 @@ file(WRITE ${WORK}/plan.json [=[{"boundary": [[0,0],[40,0],[40,30],[0,30]], "obs
 run(0 ${TOPONAV} observe --world ${WORK}/plan.json --pose 5,5,0)
 expect_contains("${OUT}" "corner")
 run(0 ${TOPONAV} world --world ${WORK}/plan.json --out ${WORK}/plan)
+run(0 ${TOPONAV} world --world ${WORK}/plan.json --out ${WORK}/plan --check --no-png)
 
 # trial: the picture, and a trace with one row a step plus the final map
 run(0 ${TOPONAV} trial --world ${WORK}/plan.json --max-steps 30 --out ${WORK}/trial --trace ${WORK}/trial/trace.csv)

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "experiments/map_drive.h"
 #include "experiments/trial.h"
 #include "sim/raycast.h"
 #include "sim/world_io.h"
@@ -67,7 +68,7 @@ std::string FuzzWorld(uint64_t seed) {
   return os.str();
 }
 
-TEST(WorldFuzz, EveryWorldTheLoaderAcceptsSurvivesObservationAndSearchSteps) {
+TEST(WorldFuzz, EveryWorldTheLoaderAcceptsSurvivesObservationAMapDriveAndSearchSteps) {
   Config config;
   TrialOptions t;
   t.max_steps = 3;
@@ -85,6 +86,17 @@ TEST(WorldFuzz, EveryWorldTheLoaderAcceptsSurvivesObservationAndSearchSteps) {
     SCOPED_TRACE(text);
     const sim::RayCaster caster(w);
     EXPECT_GE(caster.VisibilityPolygon(w.start.position()).size(), 3u);
+    try {
+      MapDriveOptions drive;
+      drive.max_steps = 3;
+      drive.seed = seed;
+      RunMapDrive(w, config, drive);
+    } catch (const core::DataError& e) {
+      const std::string what = e.what();  // refusals a user can act on
+      EXPECT_TRUE(what.find("does not fit") != std::string::npos || what.find("no drivable path") != std::string::npos) << what;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "an accepted world made the map drive fail: " << e.what();
+    }
     for (int agents : {1, 2}) {
       t.num_agents = agents;
       try {
