@@ -120,6 +120,7 @@ void Validate(const Config& c) {
   InSection(c, "", [&] { core::CheckRanges(c.open_world, OpenWorldOptions::Fields(), "open_world."); });
   InSection(c, "", [&] { core::CheckRanges(c.picture, PictureOptions::Fields(), "picture."); });
   InSection(c, "", [&] { core::CheckRanges(c.bench, BenchOptions::Fields(), "bench."); });
+  InSection(c, "", [&] { c.datagen.Validate(); });
   ValidateAcrossSections(c);
 }
 
@@ -176,6 +177,17 @@ void ReadDemo(YamlSection d, DemoJob* demo) {
   d.Finish();
 }
 
+void ReadDatagen(YamlSection d, DatagenOptions* o) {
+  if (d.Has("kinds")) {
+    std::vector<std::string> kinds;
+    d.Read("kinds", &kinds);
+    o->kinds.clear();
+    for (const auto& k : kinds) o->kinds.push_back(ReadWorldKind(d, "kinds", k));
+  }
+  d.ReadFields(o, DatagenOptions::Fields());
+  d.Finish();
+}
+
 void ReadWorlds(YamlSection w, sim::WorldOptions* worlds) {
   ReadSection(w.Section("labyrinth"), &worlds->labyrinth);
   ReadSection(w.Section("office_park"), &worlds->office_park);
@@ -206,6 +218,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadSection(top.Section("picture"), &c.picture);
   ReadBench(top.Section("bench"), &c.bench);
   ReadDemo(top.Section("demo"), &c.demo);
+  ReadDatagen(top.Section("datagen"), &c.datagen);
   top.Finish();
   Validate(c);
   return c;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/world.h"
+#include "experiments/datagen.h"
 #include "experiments/sensor_factory.h"
 #include "mapping/mapping.h"
 #include "planning/navigation.h"
@@ -88,6 +89,7 @@ struct Config {
   planning::PlannerOptions planning;
   SearchOptions search;
   OpenWorldOptions open_world;
+  DatagenOptions datagen;
   PictureOptions picture;
   DemoJob demo;
   BenchOptions bench;

@@ -121,6 +121,13 @@ cv::Mat ToBgr(const sim::Panorama& p) {
 
 void WritePanoramaPng(const sim::Panorama& pano, const std::string& png_path) { Save(ToBgr(pano), png_path); }
 
+void WriteGreyPng(const std::vector<uint8_t>& pixels, int width, int height, const std::string& png_path) {
+  TOPONAV_CHECK(pixels.size() == size_t(width) * size_t(height), "grey image of " << pixels.size() << " bytes");
+  cv::Mat image(height, width, CV_8UC1);
+  std::copy(pixels.begin(), pixels.end(), image.data);
+  Save(image, png_path);
+}
+
 void WriteDepthPng(const sim::Panorama& pano, double max_depth, const std::string& png_path) {
   if (pano.depth.empty()) throw core::InternalError("panorama has no depth image");
   cv::Mat grey(pano.height, pano.width, CV_8UC1);

@@ -51,5 +51,7 @@ void WritePanoramaPng(const sim::Panorama& pano, const std::string& png_path);
 void WriteDepthPng(const sim::Panorama& pano, double max_depth, const std::string& png_path);
 void WriteContactSheet(const std::vector<sim::Panorama>& panos, const std::vector<std::string>& captions,
                        const std::string& png_path);
+// A width x height single-channel image (row-major bytes) as a grey PNG, values unchanged.
+void WriteGreyPng(const std::vector<uint8_t>& pixels, int width, int height, const std::string& png_path);
 
 }  // namespace toponav::experiments

@@ -405,6 +405,35 @@ int RunBench(BenchArgs a) {
   return RunReport({a.batch.out_dir}, a.batch.out_dir);
 }
 
+// ---------------------------------------------------------------- datagen
+
+struct DatagenArgs {
+  std::string config = "configs/learning/ci.yaml", out = "results/dataset";
+  int max_samples = 0;
+};
+
+int RunDatagen(const DatagenArgs& a) {
+  const experiments::Config cfg = experiments::LoadConfig(a.config);
+  const core::RangeBearingGrid grid;
+  fmt::print("toponav datagen: {} training and {} validation samples ({} per world){} -> {}\n",
+             experiments::ListSamples(cfg.datagen, experiments::Split::kTrain).size(),
+             experiments::ListSamples(cfg.datagen, experiments::Split::kVal).size(), cfg.datagen.samples_per_world,
+             a.max_samples > 0 ? fmt::format(", at most {} per split", a.max_samples) : "", a.out);
+  const auto s = experiments::ExportDataset(cfg.datagen, cfg.worlds, cfg.render, grid, a.out, a.max_samples);
+  fmt::print("wrote {} samples in {:.1f} s ({:.1f} samples/s): {}/dataset.json, index.csv, train/, val/, contact_sheet.png\n",
+             s.samples, s.seconds, s.samples_per_second(), a.out);
+  return 0;
+}
+
+CLI::App* AddDatagenCommand(CLI::App& app, DatagenArgs* a) {
+  CLI::App* cmd = app.add_subcommand("datagen", "Export training data for the learned vertex sensor: panoramas and their "
+                                                "vertex labels on the range-bearing grid (README: Training data)");
+  cmd->add_option("--config", a->config, "Config with a datagen: section")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output directory")->capture_default_str();
+  cmd->add_option("--max-samples", a->max_samples, "At most this many samples per split (0: all)")->check(CLI::Range(0, 100000000));
+  return cmd;
+}
+
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -545,6 +574,8 @@ int main(int argc, char** argv) {
   CLI::App* map = AddMapCommand(app, &ma);
   CLI::App* trial = AddTrialCommand(app, &ta);
   CLI::App* bench = AddBenchCommand(app, &ba);
+  DatagenArgs da;
+  CLI::App* datagen = AddDatagenCommand(app, &da);
   std::vector<std::string> report_dirs;
   std::string report_out;
   auto* report = app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");
@@ -573,6 +604,7 @@ int main(int argc, char** argv) {
     if (*map) return RunMap(ma);
     if (*trial) return RunTrialCommand(ta);
     if (*bench) return RunBench(ba);
+    if (*datagen) return RunDatagen(da);
     if (*report) return RunReport(report_dirs, report_out);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);

@@ -1,0 +1,199 @@
+#include "experiments/datagen.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "core/rng.h"
+#include "experiments/draw.h"
+#include "sim/raycast.h"
+
+namespace toponav::experiments {
+
+namespace fs = std::filesystem;
+
+const core::OptionFields<DatagenOptions>& DatagenOptions::Fields() {
+  using O = DatagenOptions;
+  static const core::OptionFields<O> fields{
+      {"train_first_seed", &O::train_first_seed, 0, 9999},
+      {"train_num_seeds", &O::train_num_seeds, 0, 10000},
+      {"val_first_seed", &O::val_first_seed, 0, 9999},
+      {"val_num_seeds", &O::val_num_seeds, 0, 10000},
+      {"samples_per_world", &O::samples_per_world, 1, 100000},
+      {"min_clearance", &O::min_clearance, 0.0, 50.0},
+  };
+  return fields;
+}
+
+void DatagenOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "datagen.");
+  auto fail = [](const char* key, int v, const std::string& why) {
+    throw core::ConfigError("<options>", key, std::to_string(v), why);
+  };
+  // Tuning data only: benchmark worlds (seeds from 10000) are never trained on.
+  if (train_first_seed + train_num_seeds > 10000) fail("datagen.train_num_seeds", train_num_seeds, "training worlds must have seeds below 10000");
+  if (val_first_seed + val_num_seeds > 10000) fail("datagen.val_num_seeds", val_num_seeds, "validation worlds must have seeds below 10000");
+  const bool overlap = val_first_seed < train_first_seed + train_num_seeds && train_first_seed < val_first_seed + val_num_seeds;
+  if (overlap && train_num_seeds > 0 && val_num_seeds > 0)
+    fail("datagen.val_first_seed", val_first_seed, "validation seeds must not overlap the training seeds");
+  if (kinds.empty()) throw core::ConfigError("<options>", "datagen.kinds", "[]", "list at least one world kind");
+}
+
+const char* ToString(Split split) { return split == Split::kTrain ? "train" : "val"; }
+
+std::vector<SampleId> ListSamples(const DatagenOptions& o, Split split) {
+  const int first = split == Split::kTrain ? o.train_first_seed : o.val_first_seed;
+  const int count = split == Split::kTrain ? o.train_num_seeds : o.val_num_seeds;
+  std::vector<SampleId> out;
+  for (int s = 0; s < count; ++s)
+    for (const auto kind : o.kinds)
+      for (int i = 0; i < o.samples_per_world; ++i) out.push_back({split, kind, uint64_t(first + s), i});
+  return out;
+}
+
+struct WorldSampler::Impl {
+  core::World world;
+  std::unique_ptr<sim::Renderer> renderer;
+  std::unique_ptr<sim::RayCaster> caster;
+  core::RangeBearingGrid grid;
+  double min_clearance = 0;
+};
+
+WorldSampler::WorldSampler(core::WorldKind kind, uint64_t world_seed, const sim::WorldOptions& worlds,
+                           const sim::RenderOptions& render, const core::RangeBearingGrid& grid, double min_clearance)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->world = sim::GenerateWorld(kind, worlds, world_seed);
+  impl_->renderer = std::make_unique<sim::Renderer>(impl_->world, render);
+  impl_->caster = std::make_unique<sim::RayCaster>(impl_->world);
+  impl_->grid = grid;
+  impl_->min_clearance = min_clearance;
+}
+WorldSampler::~WorldSampler() = default;
+
+Sample WorldSampler::Make(const SampleId& id) const {
+  const core::World& w = impl_->world;
+  // The pose is a pure function of the sample: its own random stream.
+  core::Rng rng(core::DeriveSeed(core::DeriveSeed(id.world_seed, uint64_t(id.kind) + 1), uint64_t(id.index) * 2 + uint64_t(id.split)));
+  Sample s;
+  s.id = id;
+  for (int tries = 0;; ++tries) {
+    if (tries >= 10000)
+      throw core::DataError("<datagen>", std::string(core::ToString(id.kind)) + " seed " + std::to_string(id.world_seed) +
+                                             ": no free pose with clearance " + std::to_string(impl_->min_clearance));
+    const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
+    if (core::IsFree(w, p, true) && core::SignedDistance(w, p, true) >= impl_->min_clearance) {
+      s.pose = {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
+      break;
+    }
+  }
+  s.image = impl_->renderer->Render(s.pose);
+  s.labels = sim::RasterizeVertexLabels(impl_->caster->VisibleVertices(s.pose, impl_->grid.max_range), impl_->grid);
+  return s;
+}
+
+namespace {
+
+// The labels drawn on a copy of the panorama: a coloured tick at each labelled column, with a box at a
+// height that grows with range (near: top).  Colours: right gap orange, corner yellow, left gap magenta,
+// point cyan.
+core::Panorama WithLabels(core::Panorama pano, const sim::VertexLabelGrid& labels) {
+  static const uint8_t kColour[4][3] = {{255, 140, 0}, {255, 230, 0}, {230, 0, 230}, {0, 220, 230}};
+  const auto& g = labels.grid;
+  auto put = [&](int x, int y, const uint8_t* c) {
+    if (x < 0 || x >= pano.width || y < 0 || y >= pano.height) return;
+    for (int k = 0; k < 3; ++k) pano.rgb[3 * (size_t(y) * size_t(pano.width) + size_t(x)) + size_t(k)] = c[k];
+  };
+  for (int r = 0; r < g.rows; ++r)
+    for (int c = 0; c < g.cols; ++c) {
+      const uint8_t cell = labels.cells[g.Index(r, c)];
+      if (cell == sim::kNoVertex) continue;
+      const uint8_t* colour = kColour[cell - 1];
+      const int x = int(std::lround(double(c) * pano.width / g.cols));
+      const int y = int((r + 0.5) * pano.height / g.rows);
+      for (int yy = 0; yy < pano.height; yy += 3) put(x, yy, colour);
+      for (int dx = -3; dx <= 3; ++dx)
+        for (int dy = -3; dy <= 3; ++dy)
+          if (std::abs(dx) == 3 || std::abs(dy) == 3) put(x + dx, y + dy, colour);
+    }
+  return pano;
+}
+
+nlohmann::json DatasetJson(const DatagenOptions& o, const sim::RenderOptions& render, const core::RangeBearingGrid& g) {
+  nlohmann::json j;
+  j["format"] = "toponav-vertex-dataset-1";
+  j["grid"] = {{"rows", g.rows}, {"cols", g.cols}, {"max_range", g.max_range},
+               {"row_range", "row k holds ranges nearest (k + 1) * max_range / rows"},
+               {"col_bearing", "column j looks along bearing -pi + 2 pi j / cols, counter-clockwise from the heading"}};
+  j["labels_png"] = "one byte per cell, row-major (rows = range bins): 0 no vertex, 1 right gap, 2 corner, 3 left gap, 4 point";
+  j["image"] = {{"width", render.width}, {"height", render.height}, {"vertical_fov_deg", render.vertical_fov_deg},
+                {"columns", "column j looks along bearing -pi + 2 pi j / width"}};
+  std::vector<std::string> kinds;
+  for (auto k : o.kinds) kinds.push_back(core::ToString(k));
+  j["worlds"] = {{"kinds", kinds},
+                 {"train_seeds", {o.train_first_seed, o.train_first_seed + o.train_num_seeds - 1}},
+                 {"val_seeds", {o.val_first_seed, o.val_first_seed + o.val_num_seeds - 1}},
+                 {"samples_per_world", o.samples_per_world}, {"min_clearance", o.min_clearance}};
+  return j;
+}
+
+void WriteChecked(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.flush();
+  if (!out) throw core::DataError(path, "cannot write the file (disk full?)");
+}
+
+}  // namespace
+
+ExportSummary ExportDataset(const DatagenOptions& o, const sim::WorldOptions& worlds, const sim::RenderOptions& render,
+                            const core::RangeBearingGrid& grid, const std::string& out_dir, int max_samples) {
+  o.Validate();
+  const auto t0 = std::chrono::steady_clock::now();
+  fs::create_directories(out_dir);
+  WriteChecked((fs::path(out_dir) / "dataset.json").string(), DatasetJson(o, render, grid).dump(1) + "\n");
+  std::ostringstream index;
+  index << "sample,split,kind,world_seed,index,x,y,yaw,vertices,image,labels\n";
+  std::vector<core::Panorama> sheet;
+  std::vector<std::string> captions;
+  ExportSummary summary;
+  for (const Split split : {Split::kTrain, Split::kVal}) {
+    const fs::path dir = fs::path(out_dir) / ToString(split);
+    fs::create_directories(dir);
+    std::vector<SampleId> ids = ListSamples(o, split);
+    if (max_samples > 0 && int(ids.size()) > max_samples) ids.resize(size_t(max_samples));
+    std::unique_ptr<WorldSampler> sampler;
+    SampleId world{};
+    for (size_t k = 0; k < ids.size(); ++k) {
+      const SampleId& id = ids[k];
+      if (!sampler || id.kind != world.kind || id.world_seed != world.world_seed) {
+        sampler = std::make_unique<WorldSampler>(id.kind, id.world_seed, worlds, render, grid, o.min_clearance);
+        world = id;
+      }
+      const Sample s = sampler->Make(id);
+      char name[32];
+      std::snprintf(name, sizeof name, "%06zu", k);
+      const std::string image = (fs::path(ToString(split)) / (std::string(name) + ".png")).string();
+      const std::string labels = (fs::path(ToString(split)) / (std::string(name) + "_labels.png")).string();
+      WritePanoramaPng(s.image, (fs::path(out_dir) / image).string());
+      WriteGreyPng(s.labels.cells, grid.cols, grid.rows, (fs::path(out_dir) / labels).string());
+      index << ToString(split) << "/" << name << "," << ToString(split) << "," << core::ToString(id.kind) << "," << id.world_seed
+            << "," << id.index << "," << s.pose.x << "," << s.pose.y << "," << s.pose.yaw << "," << s.labels.num_vertices()
+            << "," << image << "," << labels << "\n";
+      if (sheet.size() < 6 && id.index == 0) {
+        sheet.push_back(WithLabels(s.image, s.labels));
+        captions.push_back(std::string(ToString(split)) + " " + core::ToString(id.kind) + " seed " +
+                           std::to_string(id.world_seed) + ": " + std::to_string(s.labels.num_vertices()) + " vertices");
+      }
+      ++summary.samples;
+    }
+  }
+  WriteChecked((fs::path(out_dir) / "index.csv").string(), index.str());
+  if (!sheet.empty()) WriteContactSheet(sheet, captions, (fs::path(out_dir) / "contact_sheet.png").string());
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return summary;
+}
+
+}  // namespace toponav::experiments
