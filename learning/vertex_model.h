@@ -1,0 +1,70 @@
+#pragma once
+// The learned vertex sensor's network (paper Sec. III-A; vertexnav.md §4.2, §4.4) behind a small header: a
+// fully-convolutional encoder-decoder from a 128x512 RGB panorama to the 32x128 range-bearing grid, with a
+// vertex logit and 4 label logits per cell.  Bearing is circular, so convolutions pad circularly along the
+// image's width.  LibTorch stays inside learning/*.cpp.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/range_bearing_grid.h"
+#include "sim/vertex_labels.h"
+
+namespace toponav::learning {
+
+struct VertexNetOptions {
+  double width = 1.0;  // channel multiplier: 1.0 is the paper's [64,64,128,128,256] / [128,64,64]; 0.25 a CPU-sized net
+  // Loss (vertexnav.md §4.4): weighted BCE on the vertex logit (positives count positive_weight times), times
+  // vertex_weight, plus the label cross-entropy over vertex cells.
+  double positive_weight = 8.0;
+  double vertex_weight = 500.0;
+  bool operator==(const VertexNetOptions& o) const { return width == o.width && positive_weight == o.positive_weight && vertex_weight == o.vertex_weight; }
+};
+
+// The network's output for one panorama: per cell, the vertex probability and the 4 label probabilities
+// [right gap, corner, left gap, point] (row-major, rows = range bins).
+struct GridOutput {
+  core::RangeBearingGrid grid;
+  std::vector<float> vertex;  // grid.size()
+  std::vector<float> labels;  // 4 * grid.size()
+};
+
+// One training example.
+struct LabelledImage {
+  const core::Panorama* image = nullptr;
+  const sim::VertexLabelGrid* labels = nullptr;
+};
+
+class VertexModel {
+ public:
+  // A freshly initialised network (weights from 'seed'); on the CPU unless 'device' is "cuda:0".
+  VertexModel(const VertexNetOptions& options, uint64_t seed, const std::string& device = "cpu");
+  ~VertexModel();
+  VertexModel(VertexModel&&) noexcept;
+  VertexModel& operator=(VertexModel&&) noexcept;
+
+  // Inference on 128x512 panoramas (throws core::DataError for another size).
+  GridOutput Predict(const core::Panorama& image) const;
+  // The loss on a batch, without training.
+  double Loss(const std::vector<LabelledImage>& batch) const;
+  // One Adam step on a batch (learning rate 'lr'); returns the batch's loss before the step.
+  double TrainStep(const std::vector<LabelledImage>& batch, double lr);
+
+  // Saves weights and metadata (format, options, free-form 'notes' such as the training data and metrics).
+  void Save(const std::string& path, const std::string& notes = "") const;
+  // Loads a model saved by Save.  A missing, truncated or foreign file, or one whose weights do not fit its
+  // declared architecture, is a core::DataError naming the file.
+  static VertexModel Load(const std::string& path, const std::string& device = "cpu");
+
+  const VertexNetOptions& options() const;
+  const std::string& notes() const;  // as saved
+  int64_t num_parameters() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace toponav::learning

@@ -1,0 +1,119 @@
+#include "learning/vertex_model.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "learning/internal/vertex_net.h"
+#include "sim/raycast.h"
+#include "sim/render.h"
+#include "sim/worlds.h"
+
+namespace toponav::learning {
+namespace {
+
+namespace fs = std::filesystem;
+
+VertexNetOptions Tiny() {
+  VertexNetOptions o;
+  o.width = 0.125;
+  return o;
+}
+
+// Two panoramas of a labyrinth with their ray-cast labels.
+struct Examples {
+  std::vector<core::Panorama> images;
+  std::vector<sim::VertexLabelGrid> labels;
+  std::vector<LabelledImage> batch() const {
+    std::vector<LabelledImage> b;
+    for (size_t i = 0; i < images.size(); ++i) b.push_back({&images[i], &labels[i]});
+    return b;
+  }
+};
+Examples MakeExamples() {
+  const core::World w = sim::GenerateLabyrinth({}, 4);
+  const sim::Renderer renderer(w, {});
+  const sim::RayCaster caster(w);
+  Examples e;
+  for (double yaw : {0.0, 2.0}) {
+    const core::Pose2 pose{w.start.x, w.start.y, yaw};
+    e.images.push_back(renderer.Render(pose));
+    e.labels.push_back(sim::RasterizeVertexLabels(caster.VisibleVertices(pose, 100.0), core::RangeBearingGrid{}));
+  }
+  return e;
+}
+
+std::string TempFile(const std::string& name) {
+  return (fs::temp_directory_path() / ("toponav_model_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+TEST(VertexModel, PredictsAProbabilityGridOfTheSensorsShape) {
+  const VertexModel m(Tiny(), 1);
+  const Examples e = MakeExamples();
+  const GridOutput out = m.Predict(e.images[0]);
+  ASSERT_EQ(out.vertex.size(), 32u * 128u);
+  ASSERT_EQ(out.labels.size(), 4u * 32u * 128u);
+  for (float v : out.vertex) ASSERT_TRUE(v > 0.0f && v < 1.0f);
+  for (size_t i = 0; i < out.vertex.size(); ++i)
+    ASSERT_NEAR(out.labels[4 * i] + out.labels[4 * i + 1] + out.labels[4 * i + 2] + out.labels[4 * i + 3], 1.0f, 1e-5);
+  core::Panorama small = e.images[0];
+  small.width = 256;
+  EXPECT_THROW(m.Predict(small), core::DataError);
+  EXPECT_GT(VertexModel({}, 1).num_parameters(), 2'000'000) << "the paper-size net (~2.1 M parameters)";
+}
+
+TEST(VertexModel, ATinyTrainingRunLowersTheLoss) {
+  VertexModel m(Tiny(), 2);
+  const Examples e = MakeExamples();
+  const double first = m.TrainStep(e.batch(), 3e-3);
+  double last = first;
+  for (int step = 0; step < 40; ++step) last = m.TrainStep(e.batch(), 3e-3);
+  EXPECT_LT(last, 0.7 * first) << "first " << first << ", after 40 steps " << last;
+}
+
+TEST(VertexModel, SaveAndLoadGiveIdenticalOutputs) {
+  VertexModel m(Tiny(), 3);
+  const Examples e = MakeExamples();
+  m.TrainStep(e.batch(), 1e-3);  // running statistics and weights away from their initial values
+  const std::string path = TempFile("saved.pt");
+  m.Save(path, "trained on two panoramas");
+  const VertexModel loaded = VertexModel::Load(path);
+  EXPECT_EQ(loaded.options(), m.options());
+  EXPECT_EQ(loaded.notes(), "trained on two panoramas");
+  EXPECT_EQ(loaded.Predict(e.images[1]).vertex, m.Predict(e.images[1]).vertex);
+  fs::remove(path);
+}
+
+TEST(VertexModel, AMissingTruncatedForeignOrMismatchedFileIsADataErrorNamingIt) {
+  const std::string good = TempFile("good.pt"), cut = TempFile("cut.pt"), text = TempFile("text.pt"),
+                    lying = TempFile("lying.pt");
+  VertexModel(Tiny(), 4).Save(good);
+  fs::copy_file(good, cut, fs::copy_options::overwrite_existing);
+  fs::resize_file(cut, fs::file_size(good) / 2);
+  std::ofstream(text) << "not a model\n";
+  {  // weights of a width-0.125 net in a file that says width 0.25
+    internal::VertexNet net(0.125);
+    torch::serialize::OutputArchive archive;
+    net->save(archive);
+    archive.write("toponav_metadata", c10::IValue(std::string(R"({"format": "toponav-vertex-net-1", "width": 0.25})")));
+    archive.save_to(lying);
+  }
+  for (const auto& [path, words] : std::vector<std::pair<std::string, std::string>>{
+           {TempFile("missing.pt"), "no such model file"}, {cut, "not a readable model file"},
+           {text, "not a readable model file"}, {lying, "do not fit the architecture"}}) {
+    try {
+      VertexModel::Load(path);
+      ADD_FAILURE() << path << " loaded";
+    } catch (const core::DataError& e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  }
+  for (const auto& p : {good, cut, text, lying}) fs::remove(p);
+}
+
+}  // namespace
+}  // namespace toponav::learning
