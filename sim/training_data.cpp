@@ -1,0 +1,90 @@
+#include "sim/training_data.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "core/rng.h"
+#include "sim/raycast.h"
+
+namespace toponav::sim {
+
+const core::OptionFields<DatagenOptions>& DatagenOptions::Fields() {
+  using O = DatagenOptions;
+  static const core::OptionFields<O> fields{
+      {"train_first_seed", &O::train_first_seed, 0, 9999},
+      {"train_num_seeds", &O::train_num_seeds, 0, 10000},
+      {"val_first_seed", &O::val_first_seed, 0, 9999},
+      {"val_num_seeds", &O::val_num_seeds, 0, 10000},
+      {"samples_per_world", &O::samples_per_world, 1, 100000},
+      {"min_clearance", &O::min_clearance, 0.0, 50.0},
+  };
+  return fields;
+}
+
+void DatagenOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "datagen.");
+  auto fail = [](const char* key, int v, const std::string& why) {
+    throw core::ConfigError("<options>", key, std::to_string(v), why);
+  };
+  // Tuning data only: benchmark worlds (seeds from 10000) are never trained on.
+  if (train_first_seed + train_num_seeds > 10000) fail("datagen.train_num_seeds", train_num_seeds, "training worlds must have seeds below 10000");
+  if (val_first_seed + val_num_seeds > 10000) fail("datagen.val_num_seeds", val_num_seeds, "validation worlds must have seeds below 10000");
+  const bool overlap = val_first_seed < train_first_seed + train_num_seeds && train_first_seed < val_first_seed + val_num_seeds;
+  if (overlap && train_num_seeds > 0 && val_num_seeds > 0)
+    fail("datagen.val_first_seed", val_first_seed, "validation seeds must not overlap the training seeds");
+  if (kinds.empty()) throw core::ConfigError("<options>", "datagen.kinds", "[]", "list at least one world kind");
+}
+
+const char* ToString(Split split) { return split == Split::kTrain ? "train" : "val"; }
+
+std::vector<SampleId> ListSamples(const DatagenOptions& o, Split split) {
+  const int first = split == Split::kTrain ? o.train_first_seed : o.val_first_seed;
+  const int count = split == Split::kTrain ? o.train_num_seeds : o.val_num_seeds;
+  std::vector<SampleId> out;
+  for (int s = 0; s < count; ++s)
+    for (const auto kind : o.kinds)
+      for (int i = 0; i < o.samples_per_world; ++i) out.push_back({split, kind, uint64_t(first + s), i});
+  return out;
+}
+
+struct WorldSampler::Impl {
+  core::World world;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<RayCaster> caster;
+  core::RangeBearingGrid grid;
+  double min_clearance = 0;
+};
+
+WorldSampler::WorldSampler(core::WorldKind kind, uint64_t world_seed, const WorldOptions& worlds,
+                           const RenderOptions& render, const core::RangeBearingGrid& grid, double min_clearance)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->world = GenerateWorld(kind, worlds, world_seed);
+  impl_->renderer = std::make_unique<Renderer>(impl_->world, render);
+  impl_->caster = std::make_unique<RayCaster>(impl_->world);
+  impl_->grid = grid;
+  impl_->min_clearance = min_clearance;
+}
+WorldSampler::~WorldSampler() = default;
+
+Sample WorldSampler::Make(const SampleId& id) const {
+  const core::World& w = impl_->world;
+  // The pose is a pure function of the sample: its own random stream.
+  core::Rng rng(core::DeriveSeed(core::DeriveSeed(id.world_seed, uint64_t(id.kind) + 1), uint64_t(id.index) * 2 + uint64_t(id.split)));
+  Sample s;
+  s.id = id;
+  for (int tries = 0;; ++tries) {
+    if (tries >= 10000)
+      throw core::DataError("<datagen>", std::string(core::ToString(id.kind)) + " seed " + std::to_string(id.world_seed) +
+                                             ": no free pose with clearance " + std::to_string(impl_->min_clearance));
+    const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
+    if (core::IsFree(w, p, true) && core::SignedDistance(w, p, true) >= impl_->min_clearance) {
+      s.pose = {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
+      break;
+    }
+  }
+  s.image = impl_->renderer->Render(s.pose);
+  s.labels = RasterizeVertexLabels(impl_->caster->VisibleVertices(s.pose, impl_->grid.max_range), impl_->grid);
+  return s;
+}
+
+}  // namespace toponav::sim

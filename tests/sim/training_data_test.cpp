@@ -1,0 +1,59 @@
+#include "sim/training_data.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/error.h"
+#include "sim/raycast.h"
+
+namespace toponav::sim {
+namespace {
+
+DatagenOptions Tiny() {
+  DatagenOptions o;
+  o.train_first_seed = 3;
+  o.train_num_seeds = 2;
+  o.val_first_seed = 7000;
+  o.val_num_seeds = 1;
+  o.samples_per_world = 3;
+  return o;
+}
+
+TEST(TrainingData, SplitsComeFromDisjointTuningSeedsAndBenchmarkSeedsAreRefused) {
+  const DatagenOptions o = Tiny();
+  const auto train = ListSamples(o, Split::kTrain), val = ListSamples(o, Split::kVal);
+  EXPECT_EQ(train.size(), 2u * 2u * 3u) << "seeds x kinds x samples";
+  EXPECT_EQ(val.size(), 1u * 2u * 3u);
+  std::set<uint64_t> train_seeds;
+  for (const auto& s : train) train_seeds.insert(s.world_seed);
+  for (const auto& s : val) EXPECT_FALSE(train_seeds.count(s.world_seed));
+  DatagenOptions overlap = o;
+  overlap.val_first_seed = 4;
+  EXPECT_THROW(overlap.Validate(), core::ConfigError);
+  DatagenOptions benchmark = o;
+  benchmark.val_first_seed = 9999;
+  benchmark.val_num_seeds = 2;  // 9999 and 10000
+  EXPECT_THROW(benchmark.Validate(), core::ConfigError);
+}
+
+TEST(TrainingData, ASampleIsAPureFunctionOfItsIdWithLabelsFromTheRayCaster) {
+  const SampleId id{Split::kTrain, core::WorldKind::kLabyrinth, 3, 1};
+  const core::RangeBearingGrid grid;
+  const WorldSampler a(id.kind, id.world_seed, {}, {}, grid, 2.0), b(id.kind, id.world_seed, {}, {}, grid, 2.0);
+  const Sample s = a.Make(id), t = b.Make(id);
+  EXPECT_EQ(s.pose.x, t.pose.x);
+  EXPECT_EQ(s.pose.yaw, t.pose.yaw);
+  EXPECT_EQ(s.image.rgb, t.image.rgb);
+  EXPECT_EQ(s.labels.cells, t.labels.cells);
+  EXPECT_NE(a.Make({Split::kTrain, id.kind, 3, 2}).pose.x, s.pose.x) << "another index, another pose";
+  const core::World w = GenerateWorld(id.kind, {}, id.world_seed);
+  EXPECT_GE(core::SignedDistance(w, s.pose.position()), 2.0);
+  const RayCaster caster(w);
+  EXPECT_EQ(s.labels.cells, RasterizeVertexLabels(caster.VisibleVertices(s.pose, grid.max_range), grid).cells);
+  EXPECT_GT(s.labels.num_vertices(), 0);
+  EXPECT_EQ(s.image.width, 512);
+}
+
+}  // namespace
+}  // namespace toponav::sim
