@@ -121,6 +121,7 @@ void Validate(const Config& c) {
   InSection(c, "", [&] { core::CheckRanges(c.picture, PictureOptions::Fields(), "picture."); });
   InSection(c, "", [&] { core::CheckRanges(c.bench, BenchOptions::Fields(), "bench."); });
   InSection(c, "", [&] { c.datagen.Validate(); });
+  InSection(c, "", [&] { c.train.Validate(); });
   ValidateAcrossSections(c);
 }
 
@@ -219,6 +220,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadBench(top.Section("bench"), &c.bench);
   ReadDemo(top.Section("demo"), &c.demo);
   ReadDatagen(top.Section("datagen"), &c.datagen);
+  ReadSection(top.Section("train"), &c.train);
   top.Finish();
   Validate(c);
   return c;

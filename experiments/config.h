@@ -9,6 +9,7 @@
 #include "core/world.h"
 #include "experiments/datagen.h"
 #include "experiments/sensor_factory.h"
+#include "learning/train_options.h"
 #include "mapping/mapping.h"
 #include "planning/navigation.h"
 #include "sim/motion.h"
@@ -90,6 +91,7 @@ struct Config {
   SearchOptions search;
   OpenWorldOptions open_world;
   DatagenOptions datagen;
+  learning::TrainOptions train;
   PictureOptions picture;
   DemoJob demo;
   BenchOptions bench;

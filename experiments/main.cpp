@@ -14,6 +14,7 @@
 #include "experiments/cli_parse.h"
 #include "experiments/experiments.h"
 #include "learning/learning.h"
+#include "learning/trainer.h"
 #include "mapping/polygon_set.h"
 #include "sim/sim.h"
 
@@ -434,6 +435,47 @@ CLI::App* AddDatagenCommand(CLI::App& app, DatagenArgs* a) {
   return cmd;
 }
 
+// ---------------------------------------------------------------- train
+
+struct TrainArgs {
+  std::string config = "configs/learning/ci.yaml", out = "results/train";
+  bool fresh = false, quiet = false;
+};
+
+std::string Duration(double s) { return fmt::format("{}m{:02d}s", int(s) / 60, int(s) % 60); }
+
+int RunTrain(const TrainArgs& a) {
+  const experiments::Config cfg = experiments::LoadConfig(a.config);
+  const auto& t = cfg.train;
+  fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}; data: {} training and {} "
+             "validation worlds of {} kinds, {} samples each -> {}\n",
+             t.width, t.batch_size, t.steps, t.learning_rate, t.validate_every, cfg.datagen.train_num_seeds,
+             cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(), cfg.datagen.samples_per_world, a.out);
+  auto report = [&](const learning::TrainProgress& p) {
+    if (a.quiet && p.val_loss < 0) return;
+    std::cerr << fmt::format("[train] step {}/{} loss {:.3f}{} elapsed {} ETA {}\n", p.step, p.steps, p.train_loss,
+                             p.val_loss >= 0 ? fmt::format(" val {:.3f} (best {:.3f})", p.val_loss, p.best_val_loss) : "",
+                             Duration(p.seconds), Duration(p.eta_seconds));
+  };
+  const auto r = learning::Train(cfg.datagen, cfg.worlds, cfg.render, t, a.out, a.fresh, report);
+  fmt::print("{}{} training / {} validation samples; best validation loss {:.4f} at step {}; {:.1f} s ({:.2f} steps/s) "
+             "-> {}\n",
+             r.resumed_from > 0 ? fmt::format("resumed at step {}; ", r.resumed_from) : "", r.train_samples, r.val_samples,
+             r.best_val_loss, r.best_step, r.seconds, (r.steps - r.resumed_from) / std::max(r.seconds, 1e-9), r.model_path);
+  return 0;
+}
+
+CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
+  CLI::App* cmd = app.add_subcommand("train", "Train the learned vertex sensor on samples rendered from the config's "
+                                              "datagen worlds; resumable; writes model.pt (the best on validation)");
+  cmd->add_option("--config", a->config, "Config with datagen: and train: sections")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output directory: model.pt, checkpoint.pt, train_state.json, train_log.csv")
+      ->capture_default_str();
+  cmd->add_flag("--fresh", a->fresh, "Start over instead of resuming the directory's run");
+  cmd->add_flag("--quiet", a->quiet, "Report validations only");
+  return cmd;
+}
+
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -576,6 +618,8 @@ int main(int argc, char** argv) {
   CLI::App* bench = AddBenchCommand(app, &ba);
   DatagenArgs da;
   CLI::App* datagen = AddDatagenCommand(app, &da);
+  TrainArgs tra;
+  CLI::App* train = AddTrainCommand(app, &tra);
   std::vector<std::string> report_dirs;
   std::string report_out;
   auto* report = app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");
@@ -605,6 +649,7 @@ int main(int argc, char** argv) {
     if (*trial) return RunTrialCommand(ta);
     if (*bench) return RunBench(ba);
     if (*datagen) return RunDatagen(da);
+    if (*train) return RunTrain(tra);
     if (*report) return RunReport(report_dirs, report_out);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);

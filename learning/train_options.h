@@ -1,0 +1,35 @@
+#pragma once
+// The options of `toponav train` (YAML section `train:`), header-only so the config reader can hold them
+// without linking the learning layer.
+#include "core/option_fields.h"
+
+namespace toponav::learning {
+
+// YAML section `train:`.
+struct TrainOptions {
+  double width = 0.25;          // network width multiplier (1.0: the paper's)
+  int batch_size = 8;
+  int steps = 1000;             // Adam steps in all
+  double learning_rate = 1e-3;
+  int validate_every = 100;     // steps between validations (and checkpoints)
+  int threads = 2;              // CPU threads (0: LibTorch's default)
+  bool cuda = false;            // use the GPU if this LibTorch has one
+  int seed = 0;                 // initial weights and batch order
+  static const core::OptionFields<TrainOptions>& Fields() {
+    using O = TrainOptions;
+    static const core::OptionFields<O> fields{
+        {"width", &O::width, 0.05, 4.0},
+        {"batch_size", &O::batch_size, 1, 1024},
+        {"steps", &O::steps, 1, 10000000},
+        {"learning_rate", &O::learning_rate, 1e-7, 1.0},
+        {"validate_every", &O::validate_every, 1, 10000000},
+        {"threads", &O::threads, 0, 256},
+        {"cuda", &O::cuda},
+        {"seed", &O::seed, 0, 1000000000},
+    };
+    return fields;
+  }
+  void Validate() const { core::CheckRanges(*this, Fields(), "train."); }
+};
+
+}  // namespace toponav::learning
