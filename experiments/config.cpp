@@ -146,8 +146,12 @@ void ReadSensor(YamlSection s, SensorConfig* sensor) {
   const auto k = ParseSensorKind(kind);
   if (!k) s.Fail("kind", kind, fmt::format("unknown sensor kind (known: {})", fmt::join(SensorKindNames(), ", ")));
   sensor->kind = *k;
-  s.ReadFields(&sensor->noisy, sim::NoisySensorOptions::Fields());
-  s.Finish();
+  if (sensor->kind == SensorKind::kNoisy) s.ReadFields(&sensor->noisy, sim::NoisySensorOptions::Fields());
+  if (sensor->kind == SensorKind::kLearned) {
+    s.Read("model", &sensor->learned.model);
+    s.ReadFields(&sensor->learned, LearnedSensorOptions::Fields());
+  }
+  s.Finish();  // keys of another kind are unknown here
 }
 
 void ReadBench(YamlSection b, BenchOptions* bench) {

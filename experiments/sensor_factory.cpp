@@ -1,16 +1,20 @@
 #include "experiments/sensor_factory.h"
 
 #include "core/error.h"
+#include "learning/learned_detector.h"
+#include "learning/learning.h"
+#include "sim/rendering_sensor.h"
 
 namespace toponav::experiments {
 
 namespace {
-constexpr SensorKind kKinds[] = {SensorKind::kNoisy};
+constexpr SensorKind kKinds[] = {SensorKind::kNoisy, SensorKind::kLearned};
 }  // namespace
 
 const char* ToString(SensorKind kind) {
   switch (kind) {
     case SensorKind::kNoisy: return "noisy";
+    case SensorKind::kLearned: return "learned";
   }
   return "?";
 }
@@ -27,8 +31,22 @@ std::vector<std::string> SensorKindNames() {
   return out;
 }
 
+const core::OptionFields<LearnedSensorOptions>& LearnedSensorOptions::Fields() {
+  using O = LearnedSensorOptions;
+  static const core::OptionFields<O> fields{
+      {"threshold", &O::threshold, 0.01, 0.99},
+      {"sigma_range", &O::sigma_range, 0.01, 100.0},
+      {"sigma_bearing", &O::sigma_bearing, 1e-4, 3.0},
+      {"threads", &O::threads, 0, 256},
+  };
+  return fields;
+}
+
 void SensorConfig::Validate() const {
   if (kind == SensorKind::kNoisy) noisy.Validate();
+  if (kind != SensorKind::kLearned) return;
+  core::CheckRanges(learned, LearnedSensorOptions::Fields(), "sensor.");
+  if (learned.model.empty()) throw core::ConfigError("<options>", "sensor.model", "", "kind learned needs a model file");
 }
 
 std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& config, const SensorSetup& setup) {
@@ -36,6 +54,15 @@ std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& co
   config.Validate();
   switch (config.kind) {
     case SensorKind::kNoisy: return sim::CreateNoisyGroundTruthSensor(*setup.world, config.noisy, setup.seed);
+    case SensorKind::kLearned: {
+      learning::DecodeOptions decode;
+      decode.threshold = float(config.learned.threshold);
+      decode.sigma_range = config.learned.sigma_range;
+      decode.sigma_bearing = config.learned.sigma_bearing;
+      learning::SelectBackend(false, config.learned.threads);
+      return sim::CreateRenderingSensor(*setup.world, setup.render, learning::CreateLearnedDetector(config.learned.model, decode),
+                                        setup.goal);
+    }
   }
   core::ThrowInternal(__FILE__, __LINE__, "unhandled sensor kind");
 }

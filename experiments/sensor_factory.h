@@ -1,10 +1,10 @@
 #pragma once
 // The sensor factory: the one place that builds the sensor a config asks for (`sensor: {kind: ..., ...}`),
-// so the agent loop runs unchanged with any of them.  Kinds so far:
-//   noisy: the simulated vertex sensor on the ray-cast ground truth (sim::NoisySensorOptions keys).
-// Image-based kinds (a learned network, a folder of recorded panoramas) are detectors composed with the
-// renderer (sim::CreateRenderingSensor) or with the recorded images; they are built here too, and this is
-// the only file of the experiments layer that may include the learning layer.
+// so the agent loop runs unchanged with any of them.  Kinds:
+//   noisy:   the simulated vertex sensor on the ray-cast ground truth (sim::NoisySensorOptions keys);
+//   learned: the vertex network of a model file (`model: PATH`) on the rendered panorama (LearnedSensorOptions).
+// Image-based kinds are detectors composed with the renderer (sim::CreateRenderingSensor); this is the only
+// file of the experiments layer that includes the learning layer.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -12,22 +12,34 @@
 #include <vector>
 
 #include "core/observation.h"
+#include "core/option_fields.h"
 #include "core/world.h"
 #include "sim/noisy_sensor.h"
 #include "sim/render.h"
 
 namespace toponav::experiments {
 
-enum class SensorKind { kNoisy };
-const char* ToString(SensorKind kind);                       // "noisy"
+enum class SensorKind { kNoisy, kLearned };
+const char* ToString(SensorKind kind);                       // "noisy", "learned"
 std::optional<SensorKind> ParseSensorKind(const std::string& name);
 std::vector<std::string> SensorKindNames();
+
+// The learned sensor's keys (beside `kind: learned`).
+struct LearnedSensorOptions {
+  std::string model;             // a model file written by `toponav train`
+  double threshold = 0.5;        // a vertex-map peak above this is a detection
+  double sigma_range = 5.0;      // the covariance reported with each detection (world units, radians)
+  double sigma_bearing = 0.125;
+  int threads = 1;               // CPU threads for the network (a bench runs one trial per core); 0: LibTorch's default
+  static const core::OptionFields<LearnedSensorOptions>& Fields();  // the numeric keys and their ranges
+};
 
 // YAML section `sensor:`.
 struct SensorConfig {
   SensorKind kind = SensorKind::kNoisy;
   sim::NoisySensorOptions noisy;  // kind noisy: its keys sit beside `kind`
-  void Validate() const;          // throws core::ConfigError ("sensor.max_range", ...)
+  LearnedSensorOptions learned;   // kind learned: likewise
+  void Validate() const;          // throws core::ConfigError ("sensor.max_range", "sensor.model", ...)
 };
 
 // What the sensor is for: the world it observes (and renders), the render options of image-based kinds, the

@@ -2,7 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+
 #include "core/error.h"
+#include "experiments/trial.h"
+#include "learning/peaks.h"
+#include "learning/vertex_model.h"
+#include "sim/render.h"
 #include "experiments/config.h"
 #include "sim/worlds.h"
 
@@ -42,7 +50,7 @@ TEST(SensorFactory, KindsAreReadByNameAndAnUnknownKindIsAConfigErrorNamingTheKey
   }
   EXPECT_EQ(ParseSensorKind("noisy"), SensorKind::kNoisy);
   EXPECT_FALSE(ParseSensorKind("Noisy"));
-  EXPECT_EQ(SensorKindNames(), std::vector<std::string>{"noisy"});
+  EXPECT_EQ(SensorKindNames(), (std::vector<std::string>{"noisy", "learned"}));
 }
 
 TEST(SensorFactory, BadOptionsAreRejectedWhenTheSensorIsMade) {
@@ -50,6 +58,58 @@ TEST(SensorFactory, BadOptionsAreRejectedWhenTheSensorIsMade) {
   SensorConfig config;
   config.noisy.max_range = -1;
   EXPECT_THROW(CreateSensor(config, {&w, {}, std::nullopt, 1}), core::ConfigError);
+}
+
+TEST(SensorFactory, TheLearnedKindRunsTheModelOnTheRenderedPanorama) {
+  const std::string model = (std::filesystem::temp_directory_path() / ("toponav_sf_" + std::to_string(::getpid()) + ".pt")).string();
+  learning::VertexNetOptions tiny;
+  tiny.width = 0.125;
+  learning::VertexModel(tiny, 5).Save(model);
+  const Config c = ParseConfig("sensor:\n  kind: learned\n  model: " + model + "\n  threshold: 0.3\n", "x.yaml");
+  EXPECT_EQ(c.sensor.kind, SensorKind::kLearned);
+  EXPECT_DOUBLE_EQ(c.sensor.learned.threshold, 0.3);
+  const core::World w = sim::GenerateLabyrinth({}, 3);
+  auto sensor = CreateSensor(c.sensor, {&w, {}, std::nullopt, 1});
+  const core::Observation z = sensor->Observe(w.start, 1);
+  EXPECT_EQ(z.agent, 1);
+  EXPECT_EQ(z.pose.x, w.start.x);
+  // The untrained network's output, decoded: what the factory's sensor reports is what the model predicts.
+  const learning::VertexModel m = learning::VertexModel::Load(model);
+  const learning::GridOutput out = m.Predict(sim::Renderer(w, {}).Render(w.start));
+  learning::DecodeOptions decode;
+  decode.threshold = 0.3f;
+  EXPECT_EQ(z.detections.size(), learning::DecodeDetections(out.vertex, out.labels, out.grid, decode).size());
+  for (size_t i = 1; i < z.detections.size(); ++i) EXPECT_LE(z.detections[i - 1].bearing, z.detections[i].bearing);
+  // A trial runs with it (a few steps).
+  TrialOptions t;
+  t.max_steps = 3;
+  EXPECT_EQ(RunSearchTrial(w, c, t, 7).steps, 3);
+  std::filesystem::remove(model);
+}
+
+TEST(SensorFactory, TheLearnedKindNeedsAReadableModelAndOnlyItsOwnKeys) {
+  auto key_of = [](const std::string& yaml) {
+    try {
+      ParseConfig(yaml, "x.yaml");
+    } catch (const core::ConfigError& e) {
+      return e.key();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(key_of("sensor:\n  kind: learned\n"), "sensor.model");
+  EXPECT_EQ(key_of("sensor:\n  kind: learned\n  model: m.pt\n  miss_probability: 0.1\n"), "sensor.miss_probability")
+      << "a noisy-sensor key with kind learned";
+  EXPECT_EQ(key_of("sensor:\n  model: m.pt\n"), "sensor.model") << "a learned-sensor key with kind noisy";
+  SensorConfig missing;
+  missing.kind = SensorKind::kLearned;
+  missing.learned.model = "/no/such/model.pt";
+  const core::World w = sim::GenerateLabyrinth({}, 3);
+  try {
+    CreateSensor(missing, {&w, {}, std::nullopt, 1});
+    ADD_FAILURE() << "no error";
+  } catch (const core::DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("/no/such/model.pt"), std::string::npos);
+  }
 }
 
 }  // namespace

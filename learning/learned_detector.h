@@ -1,0 +1,17 @@
+#pragma once
+// The learned vertex sensor as an image detector: the vertex network (a model file written by `toponav
+// train`) on each panorama, its output decoded into detections (learning/peaks.h).  Composed with the
+// renderer by the sensor factory (`sensor: {kind: learned, model: PATH}`).
+#include <memory>
+#include <string>
+
+#include "core/observation.h"
+#include "learning/peaks.h"
+
+namespace toponav::learning {
+
+// Throws core::DataError naming 'model_path' if it is missing or not a vertex-network file.
+std::unique_ptr<core::VertexDetectorInterface> CreateLearnedDetector(const std::string& model_path,
+                                                                     const DecodeOptions& decode);
+
+}  // namespace toponav::learning
