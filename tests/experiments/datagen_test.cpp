@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "tests/testing/training_data.h"
 #include "experiments/config.h"
 #include "sim/raycast.h"
 
@@ -17,15 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-DatagenOptions Tiny() {
-  DatagenOptions o;
-  o.train_first_seed = 3;
-  o.train_num_seeds = 2;
-  o.val_first_seed = 7000;
-  o.val_num_seeds = 1;
-  o.samples_per_world = 3;
-  return o;
-}
+DatagenOptions Tiny() { return testing::TinyDatagen(); }
 
 TEST(Datagen, ABenchmarkSeedInTheConfigIsRefusedNamingTheKey) {
   try {

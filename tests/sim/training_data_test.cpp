@@ -5,20 +5,13 @@
 #include <set>
 
 #include "core/error.h"
+#include "tests/testing/training_data.h"
 #include "sim/raycast.h"
 
 namespace toponav::sim {
 namespace {
 
-DatagenOptions Tiny() {
-  DatagenOptions o;
-  o.train_first_seed = 3;
-  o.train_num_seeds = 2;
-  o.val_first_seed = 7000;
-  o.val_num_seeds = 1;
-  o.samples_per_world = 3;
-  return o;
-}
+DatagenOptions Tiny() { return testing::TinyDatagen(); }
 
 TEST(TrainingData, SplitsComeFromDisjointTuningSeedsAndBenchmarkSeedsAreRefused) {
   const DatagenOptions o = Tiny();
