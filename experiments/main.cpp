@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "experiments/batch.h"
 #include "experiments/cli_parse.h"
+#include "experiments/sensor_eval.h"
 #include "experiments/experiments.h"
 #include "learning/learning.h"
 #include "learning/trainer.h"
@@ -476,6 +477,48 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
   return cmd;
 }
 
+// ---------------------------------------------------------------- eval-sensor
+
+struct EvalSensorArgs {
+  std::string config, model, kind = "labyrinth", seeds = "10000-10019", out;
+  int samples = 10;
+};
+
+int RunEvalSensor(const EvalSensorArgs& a) {
+  experiments::Config cfg = LoadOrDefault(a.config);
+  if (!a.model.empty()) {
+    cfg.sensor.kind = experiments::SensorKind::kLearned;
+    cfg.sensor.learned.model = a.model;
+  }
+  experiments::SensorEvalOptions o;
+  o.kind = ParseKind(a.kind);
+  o.seeds = experiments::ParseSeeds(a.seeds);
+  o.samples_per_world = a.samples;
+  const auto e = experiments::EvaluateSensor(cfg, o);
+  const std::string on = fmt::format("{} seeds {}, {} poses a world ({} sensor{})", a.kind, a.seeds, a.samples,
+                                     experiments::ToString(cfg.sensor.kind), a.model.empty() ? "" : " " + a.model);
+  fmt::print("{} observations, {} true vertices, {} detections: precision {:.3f}, recall {:.3f}, F1 {:.3f}, label accuracy "
+             "{:.3f}, mean range error {:.2f}, mean bearing error {:.4f} rad ({:.1f} s)\n",
+             e.observations, e.true_vertices, e.detections, e.precision(), e.recall(), e.f1(), e.label_accuracy(),
+             e.mean_range_error(), e.mean_bearing_error(), e.seconds);
+  const std::string yaml = experiments::NoisySensorYaml(e, on);
+  fmt::print("{}", yaml);
+  if (!a.out.empty()) WriteTextFile(a.out, yaml);
+  return 0;
+}
+
+CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
+  CLI::App* cmd = app.add_subcommand("eval-sensor", "Score a sensor against the ray-cast ground truth: precision, recall, F1, "
+                                                    "label accuracy, range/bearing error, and a calibrated noisy-sensor block");
+  cmd->add_option("--config", a->config, "Config whose sensor: to evaluate (default: the noisy sensor)");
+  cmd->add_option("--model", a->model, "Evaluate the learned sensor with this model file instead");
+  cmd->add_option("--kind", a->kind, "World kind")->capture_default_str();
+  cmd->add_option("--seeds", a->seeds, "World seeds A-B (held-out quality: seeds from 10000, never trained on)")->capture_default_str();
+  cmd->add_option("--samples-per-world", a->samples, "Poses per world")->capture_default_str()->check(CLI::Range(1, 100000));
+  cmd->add_option("--out", a->out, "Also write the sensor: block to this YAML file");
+  return cmd;
+}
+
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -620,6 +663,8 @@ int main(int argc, char** argv) {
   CLI::App* datagen = AddDatagenCommand(app, &da);
   TrainArgs tra;
   CLI::App* train = AddTrainCommand(app, &tra);
+  EvalSensorArgs ea;
+  CLI::App* eval_sensor = AddEvalSensorCommand(app, &ea);
   std::vector<std::string> report_dirs;
   std::string report_out;
   auto* report = app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");
@@ -650,6 +695,7 @@ int main(int argc, char** argv) {
     if (*bench) return RunBench(ba);
     if (*datagen) return RunDatagen(da);
     if (*train) return RunTrain(tra);
+    if (*eval_sensor) return RunEvalSensor(ea);
     if (*report) return RunReport(report_dirs, report_out);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);

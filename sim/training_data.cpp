@@ -66,22 +66,22 @@ WorldSampler::WorldSampler(core::WorldKind kind, uint64_t world_seed, const Worl
 }
 WorldSampler::~WorldSampler() = default;
 
-Sample WorldSampler::Make(const SampleId& id) const {
-  const core::World& w = impl_->world;
+core::Pose2 SamplePose(const core::World& w, const SampleId& id, double min_clearance) {
   // The pose is a pure function of the sample: its own random stream.
   core::Rng rng(core::DeriveSeed(core::DeriveSeed(id.world_seed, uint64_t(id.kind) + 1), uint64_t(id.index) * 2 + uint64_t(id.split)));
+  for (int tries = 0; tries < 10000; ++tries) {
+    const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
+    if (core::IsFree(w, p, true) && core::SignedDistance(w, p, true) >= min_clearance)
+      return {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
+  }
+  throw core::DataError("<datagen>", std::string(core::ToString(id.kind)) + " seed " + std::to_string(id.world_seed) +
+                                         ": no free pose with clearance " + std::to_string(min_clearance));
+}
+
+Sample WorldSampler::Make(const SampleId& id) const {
   Sample s;
   s.id = id;
-  for (int tries = 0;; ++tries) {
-    if (tries >= 10000)
-      throw core::DataError("<datagen>", std::string(core::ToString(id.kind)) + " seed " + std::to_string(id.world_seed) +
-                                             ": no free pose with clearance " + std::to_string(impl_->min_clearance));
-    const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
-    if (core::IsFree(w, p, true) && core::SignedDistance(w, p, true) >= impl_->min_clearance) {
-      s.pose = {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
-      break;
-    }
-  }
+  s.pose = SamplePose(impl_->world, id, impl_->min_clearance);
   s.image = impl_->renderer->Render(s.pose);
   s.labels = RasterizeVertexLabels(impl_->caster->VisibleVertices(s.pose, impl_->grid.max_range), impl_->grid);
   return s;

@@ -51,6 +51,10 @@ struct Sample {
   VertexLabelGrid labels;
 };
 
+// The sample's pose in 'world': a free point at least 'min_clearance' from walls and clutter, a random
+// heading; a pure function of the id.  Throws core::DataError if none is found.
+core::Pose2 SamplePose(const core::World& world, const SampleId& id, double min_clearance);
+
 // Makes the samples of one world (they share its renderer and ray caster).  Throws core::DataError if no free
 // pose with the clearance can be found.
 class WorldSampler {

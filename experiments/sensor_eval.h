@@ -1,0 +1,41 @@
+#pragma once
+// Sensor evaluation (`toponav eval-sensor`): any sensor the factory builds, at sample poses of chosen worlds,
+// against the ray-cast ground truth on the range-bearing grid.  A detection matches a true vertex within one
+// range bin and one bearing bin (one-to-one, nearest first).  The measured rates are also written as a
+// `sensor:` block for the noisy sensor, so the simulated sensor can be calibrated to a learned one.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/world.h"
+#include "experiments/config.h"
+
+namespace toponav::experiments {
+
+struct SensorEvalOptions {
+  core::WorldKind kind = core::WorldKind::kLabyrinth;
+  std::vector<uint64_t> seeds;
+  int samples_per_world = 10;
+};
+
+struct SensorEval {
+  int observations = 0, true_vertices = 0, detections = 0, matches = 0;
+  int label_correct = 0;
+  double range_error_sum = 0, bearing_error_sum = 0, range_sq_sum = 0, bearing_sq_sum = 0;
+  std::array<std::array<int, 4>, 4> confusion{};  // [true label][detected label] over matches
+  double seconds = 0;
+  double precision() const { return detections > 0 ? double(matches) / detections : 0.0; }
+  double recall() const { return true_vertices > 0 ? double(matches) / true_vertices : 0.0; }
+  double f1() const { const double p = precision(), r = recall(); return p + r > 0 ? 2 * p * r / (p + r) : 0.0; }
+  double label_accuracy() const { return matches > 0 ? double(label_correct) / matches : 0.0; }
+  double mean_range_error() const { return matches > 0 ? range_error_sum / matches : 0.0; }
+  double mean_bearing_error() const { return matches > 0 ? bearing_error_sum / matches : 0.0; }
+};
+
+SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& options);
+// The measured rates as a `sensor:` YAML block for the noisy sensor (kind noisy), with a comment saying
+// what was measured.
+std::string NoisySensorYaml(const SensorEval& e, const std::string& measured_on);
+
+}  // namespace toponav::experiments

@@ -1,0 +1,46 @@
+#include "experiments/sensor_eval.h"
+
+#include <gtest/gtest.h>
+
+namespace toponav::experiments {
+namespace {
+
+SensorEvalOptions Labyrinths() {
+  SensorEvalOptions o;
+  o.kind = core::WorldKind::kLabyrinth;
+  o.seeds = {100, 101, 102, 103};
+  o.samples_per_world = 10;
+  return o;
+}
+
+TEST(SensorEval, AnExactSensorScoresOne) {
+  Config c;
+  auto& n = c.sensor.noisy;
+  n.range_sigma = n.range_sigma_per_unit = n.bearing_sigma = n.miss_probability = 0.0;
+  n.false_positives_per_observation = n.label_confusion = n.label_softness = 0.0;
+  n.merge_bins = 0;
+  const SensorEval e = EvaluateSensor(c, Labyrinths());
+  EXPECT_GT(e.true_vertices, 100);
+  EXPECT_NEAR(e.recall(), 1.0, 0.02) << "every vertex found within a bin (two in one cell are one detection)";
+  EXPECT_NEAR(e.precision(), 1.0, 1e-9);
+  EXPECT_NEAR(e.label_accuracy(), 1.0, 1e-9);
+  EXPECT_LT(e.mean_range_error(), 1.6) << "range quantized to 3.125-unit bins";
+}
+
+TEST(SensorEval, TheNoisySensorsConfiguredRatesAreMeasuredBack) {
+  Config c;
+  c.sensor.noisy.miss_probability = 0.3;
+  c.sensor.noisy.false_positives_per_observation = 2.0;
+  c.sensor.noisy.label_confusion = 0.2;
+  c.sensor.noisy.merge_bins = 0;
+  const SensorEval e = EvaluateSensor(c, Labyrinths());
+  EXPECT_NEAR(e.recall(), 0.7, 0.06);
+  EXPECT_NEAR(double(e.detections - e.matches) / e.observations, 2.0, 0.5);
+  EXPECT_NEAR(e.label_accuracy(), 0.8, 0.08);
+  const std::string yaml = NoisySensorYaml(e, "test");
+  EXPECT_NE(yaml.find("miss_probability: 0.3"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("kind: noisy"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace toponav::experiments
