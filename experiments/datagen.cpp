@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "experiments/draw.h"
+#include "experiments/results_io.h"
 #include "sim/raycast.h"
 
 namespace toponav::experiments {
@@ -59,13 +60,6 @@ nlohmann::json DatasetJson(const DatagenOptions& o, const sim::RenderOptions& re
   return j;
 }
 
-void WriteChecked(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.flush();
-  if (!out) throw core::DataError(path, "cannot write the file (disk full?)");
-}
-
 }  // namespace
 
 ExportSummary ExportDataset(const DatagenOptions& o, const sim::WorldOptions& worlds, const sim::RenderOptions& render,
@@ -73,7 +67,7 @@ ExportSummary ExportDataset(const DatagenOptions& o, const sim::WorldOptions& wo
   o.Validate();
   const auto t0 = std::chrono::steady_clock::now();
   fs::create_directories(out_dir);
-  WriteChecked((fs::path(out_dir) / "dataset.json").string(), DatasetJson(o, render, grid).dump(1) + "\n");
+  WriteTextFile((fs::path(out_dir) / "dataset.json").string(), DatasetJson(o, render, grid).dump(1) + "\n");
   std::ostringstream index;
   index << "sample,split,kind,world_seed,index,x,y,yaw,vertices,image,labels\n";
   std::vector<core::Panorama> sheet;
@@ -110,7 +104,7 @@ ExportSummary ExportDataset(const DatagenOptions& o, const sim::WorldOptions& wo
       ++summary.samples;
     }
   }
-  WriteChecked((fs::path(out_dir) / "index.csv").string(), index.str());
+  WriteTextFile((fs::path(out_dir) / "index.csv").string(), index.str());
   if (!sheet.empty()) WriteContactSheet(sheet, captions, (fs::path(out_dir) / "contact_sheet.png").string());
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return summary;

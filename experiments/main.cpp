@@ -1,4 +1,5 @@
-// toponav: the command-line front end.  Subcommands: world, observe, render, demo, info.
+// toponav: the command-line front end.  Subcommands: world, observe, render, map, trial, bench, report, demo,
+// info here; datagen, train and eval-sensor in experiments/cli/learning_commands.cpp.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
@@ -11,11 +12,11 @@
 
 #include "core/error.h"
 #include "experiments/batch.h"
+#include "experiments/cli/common.h"
+#include "experiments/cli/learning_commands.h"
 #include "experiments/cli_parse.h"
-#include "experiments/sensor_eval.h"
 #include "experiments/experiments.h"
 #include "learning/learning.h"
-#include "learning/trainer.h"
 #include "mapping/polygon_set.h"
 #include "sim/sim.h"
 
@@ -24,36 +25,7 @@ using namespace toponav;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double MsSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-// "x,y,yaw" -> pose
-core::WorldKind ParseKind(const std::string& text) {
-  auto k = core::ParseWorldKind(text);
-  if (!k || *k == core::WorldKind::kCustom)
-    throw core::ConfigError("<command line>", "--kind", text, "expected labyrinth, office_park or guided_maze");
-  return *k;
-}
-
-experiments::Config LoadOrDefault(const std::string& path) {
-  return path.empty() ? experiments::Config{} : experiments::LoadConfig(path);
-}
-
-// Writes 'text' to 'path', checked: a full disk is an error naming the file, not an empty file.
-void WriteTextFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.flush();
-  if (!out) throw core::DataError(path, "cannot write the file (disk full?)");
-}
-
-void EnsureDir(const std::string& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw core::DataError(dir, "cannot create the directory: " + ec.message());
-}
+using namespace cli;
 
 nlohmann::json ObservationJson(const core::Pose2& pose, const std::vector<sim::VisibleVertex>& visible,
                                const core::Ring& poly) {
@@ -71,36 +43,6 @@ nlohmann::json ObservationJson(const core::Pose2& pose, const std::vector<sim::V
   j["visibility_polygon"] = nlohmann::json::array();
   for (const auto& p : poly) j["visibility_polygon"].push_back({p.x, p.y});
   return j;
-}
-
-// Where a command's world comes from: a file, or a generator kind and seed (with an optional config).
-struct WorldSource {
-  std::string world_file, kind, config, pose;
-  std::string seed = "0";  // parsed strictly (experiments::ParseSeed)
-};
-
-void AddWorldSourceOptions(CLI::App* cmd, WorldSource* src, const std::string& config_help) {
-  cmd->add_option("--world", src->world_file, "World file (world.json)");
-  cmd->add_option("--kind,--world-kind", src->kind, "Or generate a world of this kind (labyrinth, office_park, guided_maze) ...");
-  cmd->add_option("--seed", src->seed, "... from this seed")->capture_default_str();
-  cmd->add_option("--config", src->config, config_help);
-  cmd->add_option("--pose", src->pose, "Agent pose x,y,yaw (world units, radians); default: the world's start");
-}
-
-// The world with its start moved to --pose (trial, map), which must lie in free space.
-core::World StartAtPose(core::World w, const std::string& pose) {
-  if (pose.empty()) return w;
-  const core::Pose2 p = experiments::ParsePose(pose);
-  if (!w.bounds.Contains(p.position()) || !core::IsFree(w, p.position(), true))
-    throw core::ConfigError("<command line>", "--pose", pose, "must lie in the world's free space");
-  w.start = p;
-  return w;
-}
-
-core::World WorldFromSource(const WorldSource& src, const experiments::Config& cfg) {
-  if (!src.world_file.empty()) return sim::LoadWorld(src.world_file);
-  if (!src.kind.empty()) return sim::GenerateWorld(ParseKind(src.kind), cfg.worlds, experiments::ParseSeed(src.seed));
-  throw core::ConfigError("<command line>", "--world", "", "give --world FILE or --kind K --seed N");
 }
 
 // ---------------------------------------------------------------- world
@@ -407,118 +349,6 @@ int RunBench(BenchArgs a) {
   return RunReport({a.batch.out_dir}, a.batch.out_dir);
 }
 
-// ---------------------------------------------------------------- datagen
-
-struct DatagenArgs {
-  std::string config = "configs/learning/ci.yaml", out = "results/dataset";
-  int max_samples = 0;
-};
-
-int RunDatagen(const DatagenArgs& a) {
-  const experiments::Config cfg = experiments::LoadConfig(a.config);
-  const core::RangeBearingGrid grid;
-  fmt::print("toponav datagen: {} training and {} validation samples ({} per world){} -> {}\n",
-             experiments::ListSamples(cfg.datagen, experiments::Split::kTrain).size(),
-             experiments::ListSamples(cfg.datagen, experiments::Split::kVal).size(), cfg.datagen.samples_per_world,
-             a.max_samples > 0 ? fmt::format(", at most {} per split", a.max_samples) : "", a.out);
-  const auto s = experiments::ExportDataset(cfg.datagen, cfg.worlds, cfg.render, grid, a.out, a.max_samples);
-  fmt::print("wrote {} samples in {:.1f} s ({:.1f} samples/s): {}/dataset.json, index.csv, train/, val/, contact_sheet.png\n",
-             s.samples, s.seconds, s.samples_per_second(), a.out);
-  return 0;
-}
-
-CLI::App* AddDatagenCommand(CLI::App& app, DatagenArgs* a) {
-  CLI::App* cmd = app.add_subcommand("datagen", "Export training data for the learned vertex sensor: panoramas and their "
-                                                "vertex labels on the range-bearing grid (README: Training data)");
-  cmd->add_option("--config", a->config, "Config with a datagen: section")->capture_default_str();
-  cmd->add_option("--out", a->out, "Output directory")->capture_default_str();
-  cmd->add_option("--max-samples", a->max_samples, "At most this many samples per split (0: all)")->check(CLI::Range(0, 100000000));
-  return cmd;
-}
-
-// ---------------------------------------------------------------- train
-
-struct TrainArgs {
-  std::string config = "configs/learning/ci.yaml", out = "results/train";
-  bool fresh = false, quiet = false;
-};
-
-std::string Duration(double s) { return fmt::format("{}m{:02d}s", int(s) / 60, int(s) % 60); }
-
-int RunTrain(const TrainArgs& a) {
-  const experiments::Config cfg = experiments::LoadConfig(a.config);
-  const auto& t = cfg.train;
-  fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}; data: {} training and {} "
-             "validation worlds of {} kinds, {} samples each -> {}\n",
-             t.width, t.batch_size, t.steps, t.learning_rate, t.validate_every, cfg.datagen.train_num_seeds,
-             cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(), cfg.datagen.samples_per_world, a.out);
-  auto report = [&](const learning::TrainProgress& p) {
-    if (a.quiet && p.val_loss < 0) return;
-    std::cerr << fmt::format("[train] step {}/{} loss {:.3f}{} elapsed {} ETA {}\n", p.step, p.steps, p.train_loss,
-                             p.val_loss >= 0 ? fmt::format(" val {:.3f} (best {:.3f})", p.val_loss, p.best_val_loss) : "",
-                             Duration(p.seconds), Duration(p.eta_seconds));
-  };
-  const auto r = learning::Train(cfg.datagen, cfg.worlds, cfg.render, t, a.out, a.fresh, report);
-  fmt::print("{}{} training / {} validation samples; best validation loss {:.4f} at step {}; {:.1f} s ({:.2f} steps/s) "
-             "-> {}\n",
-             r.resumed_from > 0 ? fmt::format("resumed at step {}; ", r.resumed_from) : "", r.train_samples, r.val_samples,
-             r.best_val_loss, r.best_step, r.seconds, (r.steps - r.resumed_from) / std::max(r.seconds, 1e-9), r.model_path);
-  return 0;
-}
-
-CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
-  CLI::App* cmd = app.add_subcommand("train", "Train the learned vertex sensor on samples rendered from the config's "
-                                              "datagen worlds; resumable; writes model.pt (the best on validation)");
-  cmd->add_option("--config", a->config, "Config with datagen: and train: sections")->capture_default_str();
-  cmd->add_option("--out", a->out, "Output directory: model.pt, checkpoint.pt, train_state.json, train_log.csv")
-      ->capture_default_str();
-  cmd->add_flag("--fresh", a->fresh, "Start over instead of resuming the directory's run");
-  cmd->add_flag("--quiet", a->quiet, "Report validations only");
-  return cmd;
-}
-
-// ---------------------------------------------------------------- eval-sensor
-
-struct EvalSensorArgs {
-  std::string config, model, kind = "labyrinth", seeds = "10000-10019", out;
-  int samples = 10;
-};
-
-int RunEvalSensor(const EvalSensorArgs& a) {
-  experiments::Config cfg = LoadOrDefault(a.config);
-  if (!a.model.empty()) {
-    cfg.sensor.kind = experiments::SensorKind::kLearned;
-    cfg.sensor.learned.model = a.model;
-  }
-  experiments::SensorEvalOptions o;
-  o.kind = ParseKind(a.kind);
-  o.seeds = experiments::ParseSeeds(a.seeds);
-  o.samples_per_world = a.samples;
-  const auto e = experiments::EvaluateSensor(cfg, o);
-  const std::string on = fmt::format("{} seeds {}, {} poses a world ({} sensor{})", a.kind, a.seeds, a.samples,
-                                     experiments::ToString(cfg.sensor.kind), a.model.empty() ? "" : " " + a.model);
-  fmt::print("{} observations, {} true vertices, {} detections: precision {:.3f}, recall {:.3f}, F1 {:.3f}, label accuracy "
-             "{:.3f}, mean range error {:.2f}, mean bearing error {:.4f} rad ({:.1f} s)\n",
-             e.observations, e.true_vertices, e.detections, e.precision(), e.recall(), e.f1(), e.label_accuracy(),
-             e.mean_range_error(), e.mean_bearing_error(), e.seconds);
-  const std::string yaml = experiments::NoisySensorYaml(e, on);
-  fmt::print("{}", yaml);
-  if (!a.out.empty()) WriteTextFile(a.out, yaml);
-  return 0;
-}
-
-CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
-  CLI::App* cmd = app.add_subcommand("eval-sensor", "Score a sensor against the ray-cast ground truth: precision, recall, F1, "
-                                                    "label accuracy, range/bearing error, and a calibrated noisy-sensor block");
-  cmd->add_option("--config", a->config, "Config whose sensor: to evaluate (default: the noisy sensor)");
-  cmd->add_option("--model", a->model, "Evaluate the learned sensor with this model file instead");
-  cmd->add_option("--kind", a->kind, "World kind")->capture_default_str();
-  cmd->add_option("--seeds", a->seeds, "World seeds A-B (held-out quality: seeds from 10000, never trained on)")->capture_default_str();
-  cmd->add_option("--samples-per-world", a->samples, "Poses per world")->capture_default_str()->check(CLI::Range(1, 100000));
-  cmd->add_option("--out", a->out, "Also write the sensor: block to this YAML file");
-  return cmd;
-}
-
 // ---------------------------------------------------------------- demo
 
 int RunDemo(const std::string& config_path, const std::string& out_override) {
@@ -659,12 +489,7 @@ int main(int argc, char** argv) {
   CLI::App* map = AddMapCommand(app, &ma);
   CLI::App* trial = AddTrialCommand(app, &ta);
   CLI::App* bench = AddBenchCommand(app, &ba);
-  DatagenArgs da;
-  CLI::App* datagen = AddDatagenCommand(app, &da);
-  TrainArgs tra;
-  CLI::App* train = AddTrainCommand(app, &tra);
-  EvalSensorArgs ea;
-  CLI::App* eval_sensor = AddEvalSensorCommand(app, &ea);
+  cli::LearningCommands learning_commands(app);
   std::vector<std::string> report_dirs;
   std::string report_out;
   auto* report = app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");
@@ -693,9 +518,7 @@ int main(int argc, char** argv) {
     if (*map) return RunMap(ma);
     if (*trial) return RunTrialCommand(ta);
     if (*bench) return RunBench(ba);
-    if (*datagen) return RunDatagen(da);
-    if (*train) return RunTrain(tra);
-    if (*eval_sensor) return RunEvalSensor(ea);
+    if (const auto rc = learning_commands.Run()) return *rc;
     if (*report) return RunReport(report_dirs, report_out);
     if (*demo) return RunDemo(demo_config, demo_out);
     if (*info) return RunInfo(prefer_cuda);

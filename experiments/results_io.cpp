@@ -31,6 +31,13 @@ std::vector<fs::path> BatchResultsFiles(const std::string& dir) {
   return files;
 }
 
+void WriteTextFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.flush();
+  if (!out) throw core::DataError(path, "cannot write the file (disk full?)");
+}
+
 std::string ReadStamp(const std::string& dir) {
   std::string stamp;
   if (std::ifstream in(fs::path(dir) / "batch-stamp.txt"); in) std::getline(in, stamp);

@@ -13,6 +13,9 @@ namespace toponav::experiments {
 bool IsBatchResultsFile(const std::string& filename);
 std::vector<std::filesystem::path> BatchResultsFiles(const std::string& dir);  // sorted
 
+// Writes 'text' to 'path', checked: a full disk is a core::DataError naming the file, not an empty file.
+void WriteTextFile(const std::string& path, const std::string& text);
+
 // The directory's stamp ("" if none).  WriteStamp replaces it atomically (a full disk leaves the old one).
 std::string ReadStamp(const std::string& dir);
 void WriteStamp(const std::string& dir, const std::string& stamp);

@@ -229,8 +229,12 @@ TEST(BatchReliability, ATrialKilledByASignalIsRetriedOnResumeAndAThrowingOneIsNo
   EXPECT_EQ(s.ran, 1) << "only the killed trial runs again";
   EXPECT_EQ(s.already_done, 5);
   for (const auto& r : ReadResults({o.out_dir})) {
-    if (r.id.Key() == trials[4].Key()) EXPECT_TRUE(r.ok) << "the retry's record replaces the kill's";
-    if (r.id.Key() == trials[1].Key()) EXPECT_FALSE(r.ok) << "a deterministic throw stays recorded as failed";
+    if (r.id.Key() == trials[4].Key()) {
+      EXPECT_TRUE(r.ok) << "the retry's record replaces the kill's";
+    }
+    if (r.id.Key() == trials[1].Key()) {
+      EXPECT_FALSE(r.ok) << "a deterministic throw stays recorded as failed";
+    }
   }
 }
 

@@ -1,0 +1,152 @@
+#include "experiments/cli/learning_commands.h"
+
+#include <fmt/core.h>
+
+#include <iostream>
+
+#include "experiments/cli/common.h"
+#include "experiments/cli_parse.h"
+#include "experiments/datagen.h"
+#include "experiments/sensor_eval.h"
+#include "learning/trainer.h"
+
+namespace toponav::cli {
+
+namespace {
+
+// ---------------------------------------------------------------- datagen
+
+struct DatagenArgs {
+  std::string config = "configs/learning/ci.yaml", out = "results/dataset";
+  int max_samples = 0;
+};
+
+int RunDatagen(const DatagenArgs& a) {
+  const experiments::Config cfg = experiments::LoadConfig(a.config);
+  const core::RangeBearingGrid grid;
+  fmt::print("toponav datagen: {} training and {} validation samples ({} per world){} -> {}\n",
+             experiments::ListSamples(cfg.datagen, experiments::Split::kTrain).size(),
+             experiments::ListSamples(cfg.datagen, experiments::Split::kVal).size(), cfg.datagen.samples_per_world,
+             a.max_samples > 0 ? fmt::format(", at most {} per split", a.max_samples) : "", a.out);
+  const auto s = experiments::ExportDataset(cfg.datagen, cfg.worlds, cfg.render, grid, a.out, a.max_samples);
+  fmt::print("wrote {} samples in {:.1f} s ({:.1f} samples/s): {}/dataset.json, index.csv, train/, val/, contact_sheet.png\n",
+             s.samples, s.seconds, s.samples_per_second(), a.out);
+  return 0;
+}
+
+CLI::App* AddDatagenCommand(CLI::App& app, DatagenArgs* a) {
+  CLI::App* cmd = app.add_subcommand("datagen", "Export training data for the learned vertex sensor: panoramas and their "
+                                                "vertex labels on the range-bearing grid (README: Training data)");
+  cmd->add_option("--config", a->config, "Config with a datagen: section")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output directory")->capture_default_str();
+  cmd->add_option("--max-samples", a->max_samples, "At most this many samples per split (0: all)")->check(CLI::Range(0, 100000000));
+  return cmd;
+}
+
+// ---------------------------------------------------------------- train
+
+struct TrainArgs {
+  std::string config = "configs/learning/ci.yaml", out = "results/train";
+  bool fresh = false, quiet = false;
+};
+
+std::string Duration(double s) { return fmt::format("{}m{:02d}s", int(s) / 60, int(s) % 60); }
+
+int RunTrain(const TrainArgs& a) {
+  const experiments::Config cfg = experiments::LoadConfig(a.config);
+  const auto& t = cfg.train;
+  fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}; data: {} training and {} "
+             "validation worlds of {} kinds, {} samples each -> {}\n",
+             t.width, t.batch_size, t.steps, t.learning_rate, t.validate_every, cfg.datagen.train_num_seeds,
+             cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(), cfg.datagen.samples_per_world, a.out);
+  auto report = [&](const learning::TrainProgress& p) {
+    if (a.quiet && p.val_loss < 0) return;
+    std::cerr << fmt::format("[train] step {}/{} loss {:.3f}{} elapsed {} ETA {}\n", p.step, p.steps, p.train_loss,
+                             p.val_loss >= 0 ? fmt::format(" val {:.3f} (best {:.3f})", p.val_loss, p.best_val_loss) : "",
+                             Duration(p.seconds), Duration(p.eta_seconds));
+  };
+  const auto r = learning::Train(cfg.datagen, cfg.worlds, cfg.render, t, a.out, a.fresh, report);
+  fmt::print("{}{} training / {} validation samples; best validation loss {:.4f} at step {}; {:.1f} s ({:.2f} steps/s) "
+             "-> {}\n",
+             r.resumed_from > 0 ? fmt::format("resumed at step {}; ", r.resumed_from) : "", r.train_samples, r.val_samples,
+             r.best_val_loss, r.best_step, r.seconds, (r.steps - r.resumed_from) / std::max(r.seconds, 1e-9), r.model_path);
+  return 0;
+}
+
+CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
+  CLI::App* cmd = app.add_subcommand("train", "Train the learned vertex sensor on samples rendered from the config's "
+                                              "datagen worlds; resumable; writes model.pt (the best on validation)");
+  cmd->add_option("--config", a->config, "Config with datagen: and train: sections")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output directory: model.pt, checkpoint.pt, train_state.json, train_log.csv")
+      ->capture_default_str();
+  cmd->add_flag("--fresh", a->fresh, "Start over instead of resuming the directory's run");
+  cmd->add_flag("--quiet", a->quiet, "Report validations only");
+  return cmd;
+}
+
+// ---------------------------------------------------------------- eval-sensor
+
+struct EvalSensorArgs {
+  std::string config, model, kind = "labyrinth", seeds = "10000-10019", out;
+  int samples = 10;
+};
+
+int RunEvalSensor(const EvalSensorArgs& a) {
+  experiments::Config cfg = LoadOrDefault(a.config);
+  if (!a.model.empty()) {
+    cfg.sensor.kind = experiments::SensorKind::kLearned;
+    cfg.sensor.learned.model = a.model;
+  }
+  experiments::SensorEvalOptions o;
+  o.kind = ParseKind(a.kind);
+  o.seeds = experiments::ParseSeeds(a.seeds);
+  o.samples_per_world = a.samples;
+  const auto e = experiments::EvaluateSensor(cfg, o);
+  const std::string on = fmt::format("{} seeds {}, {} poses a world ({} sensor{})", a.kind, a.seeds, a.samples,
+                                     experiments::ToString(cfg.sensor.kind), a.model.empty() ? "" : " " + a.model);
+  fmt::print("{} observations, {} true vertices, {} detections: precision {:.3f}, recall {:.3f}, F1 {:.3f}, label accuracy "
+             "{:.3f}, mean range error {:.2f}, mean bearing error {:.4f} rad ({:.1f} s)\n",
+             e.observations, e.true_vertices, e.detections, e.precision(), e.recall(), e.f1(), e.label_accuracy(),
+             e.mean_range_error(), e.mean_bearing_error(), e.seconds);
+  const std::string yaml = experiments::NoisySensorYaml(e, on);
+  fmt::print("{}", yaml);
+  if (!a.out.empty()) WriteTextFile(a.out, yaml);
+  return 0;
+}
+
+CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
+  CLI::App* cmd = app.add_subcommand("eval-sensor", "Score a sensor against the ray-cast ground truth: precision, recall, F1, "
+                                                    "label accuracy, range/bearing error, and a calibrated noisy-sensor block");
+  cmd->add_option("--config", a->config, "Config whose sensor: to evaluate (default: the noisy sensor)");
+  cmd->add_option("--model", a->model, "Evaluate the learned sensor with this model file instead");
+  cmd->add_option("--kind", a->kind, "World kind")->capture_default_str();
+  cmd->add_option("--seeds", a->seeds, "World seeds A-B (held-out quality: seeds from 10000, never trained on)")->capture_default_str();
+  cmd->add_option("--samples-per-world", a->samples, "Poses per world")->capture_default_str()->check(CLI::Range(1, 100000));
+  cmd->add_option("--out", a->out, "Also write the sensor: block to this YAML file");
+  return cmd;
+}
+
+}  // namespace
+
+struct LearningCommands::Impl {
+  DatagenArgs datagen;
+  TrainArgs train;
+  EvalSensorArgs eval;
+  CLI::App *datagen_cmd = nullptr, *train_cmd = nullptr, *eval_cmd = nullptr;
+};
+
+LearningCommands::LearningCommands(CLI::App& app) : impl_(std::make_unique<Impl>()) {
+  impl_->datagen_cmd = AddDatagenCommand(app, &impl_->datagen);
+  impl_->train_cmd = AddTrainCommand(app, &impl_->train);
+  impl_->eval_cmd = AddEvalSensorCommand(app, &impl_->eval);
+}
+LearningCommands::~LearningCommands() = default;
+
+std::optional<int> LearningCommands::Run() {
+  if (*impl_->datagen_cmd) return RunDatagen(impl_->datagen);
+  if (*impl_->train_cmd) return RunTrain(impl_->train);
+  if (*impl_->eval_cmd) return RunEvalSensor(impl_->eval);
+  return std::nullopt;
+}
+
+}  // namespace toponav::cli
