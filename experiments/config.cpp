@@ -147,9 +147,13 @@ void ReadSensor(YamlSection s, SensorConfig* sensor) {
   if (!k) s.Fail("kind", kind, fmt::format("unknown sensor kind (known: {})", fmt::join(SensorKindNames(), ", ")));
   sensor->kind = *k;
   if (sensor->kind == SensorKind::kNoisy) s.ReadFields(&sensor->noisy, sim::NoisySensorOptions::Fields());
-  if (sensor->kind == SensorKind::kLearned) {
+  if (sensor->kind == SensorKind::kLearned || sensor->kind == SensorKind::kRecorded) {
     s.Read("model", &sensor->learned.model);
     s.ReadFields(&sensor->learned, LearnedSensorOptions::Fields());
+  }
+  if (sensor->kind == SensorKind::kRecorded) {
+    s.Read("images", &sensor->images);
+    s.Read("poses", &sensor->poses);
   }
   s.Finish();  // keys of another kind are unknown here
 }

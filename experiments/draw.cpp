@@ -248,7 +248,8 @@ void TrialVideo::AddFrame(const mapping::MapView& map, const std::vector<std::ve
 
 void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
                             const std::vector<sim::VisibleVertex>& visible, const core::Ring& visibility_polygon,
-                            const PictureOptions& options, const std::string& png_path) {
+                            const PictureOptions& options, const std::string& png_path,
+                            const std::vector<core::Detection>& detections) {
   Canvas c(world, options);
   DrawWorld(c, world);
   if (visibility_polygon.size() >= 3) {
@@ -258,12 +259,18 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
     cv::addWeighted(overlay, 0.5, c.image, 0.5, 0, c.image);
     c.Outline(visibility_polygon, cv::Scalar(0, 160, 220), 1);
   }
+  static const cv::Scalar colours[4] = {cv::Scalar(0, 140, 255), cv::Scalar(0, 0, 0), cv::Scalar(180, 40, 150),
+                                        cv::Scalar(140, 140, 140)};
   for (const auto& v : visible) {
-    static const cv::Scalar colours[4] = {cv::Scalar(0, 140, 255), cv::Scalar(0, 0, 0), cv::Scalar(180, 40, 150),
-                                          cv::Scalar(140, 140, 140)};
     const cv::Scalar col = colours[static_cast<int>(v.label)];
     cv::line(c.image, c.Px(pose.position()), c.Px(v.position), col, 1, cv::LINE_AA);
     cv::circle(c.image, c.Px(v.position), c.Len(1.5) + 2, col, cv::FILLED, cv::LINE_AA);
+  }
+  for (const auto& d : detections) {
+    const auto best = std::max_element(d.labels.begin(), d.labels.end());
+    const int half = c.Len(1.5) + 3 + int(std::lround(6 * *best));
+    const cv::Point p = c.Px(core::DetectionPosition(pose, d));
+    cv::rectangle(c.image, p - cv::Point(half, half), p + cv::Point(half, half), colours[best - d.labels.begin()], 2, cv::LINE_AA);
   }
   DrawAgent(c, pose, kStart);
   c.Save(png_path);

@@ -17,10 +17,12 @@ namespace toponav::experiments {
 void DrawWorldPicture(const core::World& world, const PictureOptions& options, const std::string& png_path);
 
 // The world, the visibility polygon shaded, and a ray to each visible vertex coloured by its label
-// (corner black, right gap orange, left gap purple, point grey).
+// (corner black, right gap orange, left gap purple, point grey); a sensor's detections, if any, as hollow
+// squares in the colour of their most likely label (the square's size grows with that label's probability).
 void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
                             const std::vector<sim::VisibleVertex>& visible, const core::Ring& visibility_polygon,
-                            const PictureOptions& options, const std::string& png_path);
+                            const PictureOptions& options, const std::string& png_path,
+                            const std::vector<core::Detection>& detections = {});
 
 // A map over the true world: true walls faint, known space shaded, frontiers dashed (magenta), map walls and
 // vertices black, rejected vertices red, the agents' paths in their own colours.

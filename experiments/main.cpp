@@ -14,6 +14,7 @@
 #include "experiments/batch.h"
 #include "experiments/cli/common.h"
 #include "experiments/cli/learning_commands.h"
+#include "experiments/cli/sensing_commands.h"
 #include "experiments/cli_parse.h"
 #include "experiments/experiments.h"
 #include "learning/learning.h"
@@ -26,24 +27,6 @@ using namespace toponav;
 namespace {
 
 using namespace cli;
-
-nlohmann::json ObservationJson(const core::Pose2& pose, const std::vector<sim::VisibleVertex>& visible,
-                               const core::Ring& poly) {
-  nlohmann::json j;
-  j["pose"] = {{"x", pose.x}, {"y", pose.y}, {"yaw", pose.yaw}};
-  j["visible_vertices"] = nlohmann::json::array();
-  for (const auto& v : visible)
-    j["visible_vertices"].push_back({{"ring", v.ref.ring},
-                                     {"index", v.ref.index},
-                                     {"x", v.position.x},
-                                     {"y", v.position.y},
-                                     {"range", v.range},
-                                     {"bearing", v.bearing},
-                                     {"label", core::ToString(v.label)}});
-  j["visibility_polygon"] = nlohmann::json::array();
-  for (const auto& p : poly) j["visibility_polygon"].push_back({p.x, p.y});
-  return j;
-}
 
 // ---------------------------------------------------------------- world
 
@@ -100,140 +83,6 @@ int RunWorld(const WorldArgs& a) {
     fmt::print("{} worlds, mean generation time {:.1f} ms{}\n", seeds.size(), total_ms / double(seeds.size()),
                a.check ? fmt::format(", {} with problems", failures) : "");
   return failures == 0 ? 0 : 3;
-}
-
-// ---------------------------------------------------------------- observe
-
-struct ObserveArgs : WorldSource {
-  std::string png;
-  double max_range = 0;
-};
-
-int RunObserve(const ObserveArgs& a) {
-  const experiments::Config cfg = LoadOrDefault(a.config);
-  const core::World w = WorldFromSource(a, cfg);
-  const core::Pose2 pose = StartAtPose(w, a.pose).start;
-  const sim::RayCaster caster(w);
-  const double range = a.max_range > 0 ? a.max_range : std::numeric_limits<double>::infinity();
-  const auto visible = caster.VisibleVertices(pose, range);
-  const core::Ring poly = caster.VisibilityPolygon(pose.position());
-  std::cout << ObservationJson(pose, visible, poly).dump(1) << "\n";
-  if (!a.png.empty()) {
-    experiments::DrawObservationPicture(w, pose, visible, poly, cfg.picture, a.png);
-    std::cerr << "wrote " << a.png << "\n";
-  }
-  return 0;
-}
-
-// ---------------------------------------------------------------- render
-
-struct RenderArgs : WorldSource {
-  std::string out = "pano.png", depth, ids;
-  int poses = 0;
-};
-
-int RunRender(const RenderArgs& a) {
-  const experiments::Config cfg = LoadOrDefault(a.config);
-  const core::World w = WorldFromSource(a, cfg);
-  const sim::Renderer renderer(w, cfg.render);
-  if (a.poses > 0) {
-    // A contact sheet of K panoramas along a path: the guiding path where there is one, otherwise a
-    // shortest clear path from the start to the goal.
-    std::vector<core::Vec2> path = w.guide_path;
-    if (path.size() < 2) path = sim::FreePath(w, w.start.position(), w.goal, cfg.motion.agent_radius * 3);
-    if (path.size() < 2) throw core::DataError("<world>", "no clear path from the start to the goal");
-    std::vector<sim::Panorama> panos;
-    std::vector<std::string> captions;
-    double total_ms = 0;
-    for (const auto& pose : sim::PosesAlong(path, a.poses)) {
-      const auto t0 = Clock::now();
-      panos.push_back(renderer.Render(pose));
-      total_ms += MsSince(t0);
-      captions.push_back(fmt::format("x {:.1f}  y {:.1f}  yaw {:.2f}", pose.x, pose.y, pose.yaw));
-    }
-    experiments::WriteContactSheet(panos, captions, a.out);
-    fmt::print("wrote {} ({} panoramas of {}x{}, {:.1f} ms each)\n", a.out, panos.size(), cfg.render.width,
-               cfg.render.height, total_ms / double(panos.size()));
-    return 0;
-  }
-  const core::Pose2 pose = StartAtPose(w, a.pose).start;
-  const int outputs = sim::kRenderRgb | (a.depth.empty() ? 0 : sim::kRenderDepth) | (a.ids.empty() ? 0 : sim::kRenderIds);
-  const auto t0 = Clock::now();
-  const sim::Panorama pano = renderer.Render(pose, outputs);
-  const double ms = MsSince(t0);
-  experiments::WritePanoramaPng(pano, a.out);
-  if (!a.depth.empty()) experiments::WriteDepthPng(pano, 100.0, a.depth);
-  if (!a.ids.empty()) {
-    std::ofstream out(a.ids);
-    if (!out) throw core::DataError(a.ids, "cannot open for writing");
-    out << "# obstacle id per pixel, " << pano.height << " rows x " << pano.width
-        << " columns; -1 none, ring*65536+edge for walls, 1073741824+i for clutter item i\n";
-    for (int r = 0; r < pano.height; ++r)
-      for (int c = 0; c < pano.width; ++c) out << pano.ids[size_t(r) * pano.width + c] << (c + 1 < pano.width ? ' ' : '\n');
-  }
-  fmt::print("wrote {} ({}x{}, {} triangles, rendered in {:.1f} ms)\n", a.out, pano.width, pano.height,
-             renderer.num_triangles(), ms);
-  return 0;
-}
-
-// ---------------------------------------------------------------- map
-
-struct MapArgs : WorldSource {
-  std::string out = "results/map", seeds;
-  experiments::MapDriveOptions drive;
-  bool no_mcmc = false;
-};
-
-int RunMap(MapArgs a) {
-  const experiments::Config cfg = LoadOrDefault(a.config);
-  if (a.no_mcmc) a.drive.mcmc_every = 0;
-  EnsureDir(a.out);
-  const std::vector<uint64_t> seeds =
-      a.seeds.empty() ? std::vector<uint64_t>{experiments::ParseSeed(a.seed)} : experiments::ParseSeeds(a.seeds);
-  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0;
-  for (uint64_t seed : seeds) {
-    WorldSource src = a;
-    src.seed = std::to_string(seed);
-    const core::World w = StartAtPose(WorldFromSource(src, cfg), a.pose);
-    experiments::MapDriveOptions d = a.drive;
-    d.seed = seed;
-    const auto t0 = Clock::now();
-    const experiments::MapDriveResult r = experiments::RunMapDrive(w, cfg, d);
-    const double ms = MsSince(t0);
-    const std::string stem = seeds.size() == 1 ? "map" : fmt::format("map_s{}", seed);
-    experiments::DrawMapPicture(w, r.view, {r.agent_path}, cfg.picture, (fs::path(a.out) / (stem + ".png")).string());
-    nlohmann::json j;
-    j["seed"] = seed;
-    j["steps"] = r.steps;
-    j["known_space_iou"] = r.known_space_iou;
-    j["map_vertices"] = r.map_vertices;
-    j["false_vertices"] = r.false_vertices;
-    j["mean_vertex_error"] = r.mean_vertex_error;
-    j["rejected_vertices"] = r.view.rejected.size();
-    j["map_walls"] = r.map_walls;
-    j["false_walls"] = r.false_walls;
-    j["frontiers"] = r.view.frontiers.size();
-    j["log_posterior"] = r.log_posterior;
-    j["mean_update_ms"] = r.mean_update_ms;
-    j["mean_mcmc_ms"] = r.mean_mcmc_ms;
-    j["wall_time_ms"] = ms;
-    WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), j.dump(1) + "\n");
-    fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
-               "walls {:>3} ({} false)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
-               seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
-               r.map_walls, r.false_walls, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
-    iou_sum += r.known_space_iou;
-    false_sum += r.false_vertices;
-    error_sum += r.mean_vertex_error * (r.map_vertices - r.false_vertices);  // pooled over matched vertices
-    vert_sum += r.map_vertices;
-    wall_false += r.false_walls;
-    wall_sum += r.map_walls;
-  }
-  if (seeds.size() > 1)
-    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} %, vertex error {:.2f}\n",
-               seeds.size(), iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
-               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), error_sum / std::max(1.0, vert_sum - false_sum));
-  return 0;
 }
 
 // ---------------------------------------------------------------- trial
@@ -406,38 +255,6 @@ CLI::App* AddWorldCommand(CLI::App& app, WorldArgs* a) {
   return world;
 }
 
-CLI::App* AddObserveCommand(CLI::App& app, ObserveArgs* a) {
-  CLI::App* observe = app.add_subcommand("observe", "Print the ground-truth observation from a pose as JSON");
-  AddWorldSourceOptions(observe, a, "YAML config with generator options");
-  observe->add_option("--max-range", a->max_range, "Only vertices closer than this (default: unlimited)")
-      ->check(CLI::PositiveNumber);
-  observe->add_option("--png", a->png, "Also draw the observation to this PNG");
-  return observe;
-}
-
-CLI::App* AddRenderCommand(CLI::App& app, RenderArgs* a) {
-  CLI::App* render = app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
-  AddWorldSourceOptions(render, a, "YAML config (render: width, height, camera_height, ...)");
-  render->add_option("--out", a->out, "Output PNG")->capture_default_str();
-  render->add_option("--poses", a->poses, "Instead: a contact sheet of this many panoramas along a path to the goal")
-      ->check(CLI::Range(1, 1000));
-  render->add_option("--depth", a->depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
-  render->add_option("--ids", a->ids, "Also write the obstacle-id image as text (one row per line)");
-  return render;
-}
-
-CLI::App* AddMapCommand(CLI::App& app, MapArgs* a) {
-  CLI::App* map = app.add_subcommand("map", "Drive an agent along a path with the config's sensor and build the probabilistic map");
-  AddWorldSourceOptions(map, a, "YAML config (sensor:, mapping:, motion:)");
-  map->add_option("--seeds", a->seeds, "Several seeds A-B (files then named map_sSEED)");
-  map->add_option("--path", a->drive.path, "Path to drive: tour (whole free space), guide, goal")->capture_default_str();
-  map->add_option("--steps", a->drive.max_steps, "At most this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
-  map->add_option("--mcmc-every", a->drive.mcmc_every, "MCMC every this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
-  map->add_flag("--no-mcmc", a->no_mcmc, "Build the map without the posterior (every potential vertex kept)");
-  map->add_option("--out", a->out, "Output directory: map.png and map.json")->capture_default_str();
-  return map;
-}
-
 CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
   CLI::App* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers");
   AddWorldSourceOptions(trial, a, "YAML config (sensor:, mapping:, motion:)");
@@ -478,15 +295,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   WorldArgs wa;
-  ObserveArgs oa;
-  RenderArgs ra;
-  MapArgs ma;
   TrialArgs ta;
   BenchArgs ba;
   CLI::App* world = AddWorldCommand(app, &wa);
-  CLI::App* observe = AddObserveCommand(app, &oa);
-  CLI::App* render = AddRenderCommand(app, &ra);
-  CLI::App* map = AddMapCommand(app, &ma);
+  cli::SensingCommands sensing_commands(app);
   CLI::App* trial = AddTrialCommand(app, &ta);
   CLI::App* bench = AddBenchCommand(app, &ba);
   cli::LearningCommands learning_commands(app);
@@ -513,9 +325,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*world) return RunWorld(wa);
-    if (*observe) return RunObserve(oa);
-    if (*render) return RunRender(ra);
-    if (*map) return RunMap(ma);
+    if (const auto rc = sensing_commands.Run()) return *rc;
     if (*trial) return RunTrialCommand(ta);
     if (*bench) return RunBench(ba);
     if (const auto rc = learning_commands.Run()) return *rc;

@@ -1,6 +1,9 @@
 #include "experiments/sensor_factory.h"
 
+#include <fmt/core.h>
+
 #include "core/error.h"
+#include "experiments/recorded.h"
 #include "learning/learned_detector.h"
 #include "learning/learning.h"
 #include "sim/rendering_sensor.h"
@@ -8,13 +11,14 @@
 namespace toponav::experiments {
 
 namespace {
-constexpr SensorKind kKinds[] = {SensorKind::kNoisy, SensorKind::kLearned};
+constexpr SensorKind kKinds[] = {SensorKind::kNoisy, SensorKind::kLearned, SensorKind::kRecorded};
 }  // namespace
 
 const char* ToString(SensorKind kind) {
   switch (kind) {
     case SensorKind::kNoisy: return "noisy";
     case SensorKind::kLearned: return "learned";
+    case SensorKind::kRecorded: return "recorded";
   }
   return "?";
 }
@@ -44,25 +48,36 @@ const core::OptionFields<LearnedSensorOptions>& LearnedSensorOptions::Fields() {
 
 void SensorConfig::Validate() const {
   if (kind == SensorKind::kNoisy) noisy.Validate();
-  if (kind != SensorKind::kLearned) return;
+  if (kind == SensorKind::kNoisy) return;
   core::CheckRanges(learned, LearnedSensorOptions::Fields(), "sensor.");
-  if (learned.model.empty()) throw core::ConfigError("<options>", "sensor.model", "", "kind learned needs a model file");
+  if (learned.model.empty())
+    throw core::ConfigError("<options>", "sensor.model", "", fmt::format("kind {} needs a model file", ToString(kind)));
+  if (kind == SensorKind::kRecorded && images.empty())
+    throw core::ConfigError("<options>", "sensor.images", "", "kind recorded needs the recording's folder");
 }
 
+namespace {
+
+std::unique_ptr<core::VertexDetectorInterface> LearnedDetector(const LearnedSensorOptions& o) {
+  learning::DecodeOptions decode;
+  decode.threshold = float(o.threshold);
+  decode.sigma_range = o.sigma_range;
+  decode.sigma_bearing = o.sigma_bearing;
+  learning::SelectBackend(false, o.threads);
+  return learning::CreateLearnedDetector(o.model, decode);
+}
+
+}  // namespace
+
 std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& config, const SensorSetup& setup) {
-  TOPONAV_CHECK(setup.world != nullptr, "a sensor needs a world");
   config.Validate();
+  TOPONAV_CHECK(setup.world != nullptr || config.kind == SensorKind::kRecorded, "a " << ToString(config.kind) << " sensor needs a world");
   switch (config.kind) {
     case SensorKind::kNoisy: return sim::CreateNoisyGroundTruthSensor(*setup.world, config.noisy, setup.seed);
-    case SensorKind::kLearned: {
-      learning::DecodeOptions decode;
-      decode.threshold = float(config.learned.threshold);
-      decode.sigma_range = config.learned.sigma_range;
-      decode.sigma_bearing = config.learned.sigma_bearing;
-      learning::SelectBackend(false, config.learned.threads);
-      return sim::CreateRenderingSensor(*setup.world, setup.render, learning::CreateLearnedDetector(config.learned.model, decode),
-                                        setup.goal);
-    }
+    case SensorKind::kLearned:
+      return sim::CreateRenderingSensor(*setup.world, setup.render, LearnedDetector(config.learned), setup.goal);
+    case SensorKind::kRecorded:
+      return CreateRecordedSensor(ReadRecording(config.images, config.poses), LearnedDetector(config.learned));
   }
   core::ThrowInternal(__FILE__, __LINE__, "unhandled sensor kind");
 }

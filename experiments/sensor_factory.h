@@ -2,7 +2,9 @@
 // The sensor factory: the one place that builds the sensor a config asks for (`sensor: {kind: ..., ...}`),
 // so the agent loop runs unchanged with any of them.  Kinds:
 //   noisy:   the simulated vertex sensor on the ray-cast ground truth (sim::NoisySensorOptions keys);
-//   learned: the vertex network of a model file (`model: PATH`) on the rendered panorama (LearnedSensorOptions).
+//   learned: the vertex network of a model file (`model: PATH`) on the rendered panorama (LearnedSensorOptions);
+//   recorded: the same network on the panoramas of a recording (`images: DIR`, experiments/recorded.h), which
+//             answers only at the recorded poses and needs no world.
 // Image-based kinds are detectors composed with the renderer (sim::CreateRenderingSensor); this is the only
 // file of the experiments layer that includes the learning layer.
 #include <cstdint>
@@ -19,8 +21,8 @@
 
 namespace toponav::experiments {
 
-enum class SensorKind { kNoisy, kLearned };
-const char* ToString(SensorKind kind);                       // "noisy", "learned"
+enum class SensorKind { kNoisy, kLearned, kRecorded };
+const char* ToString(SensorKind kind);                       // "noisy", "learned", "recorded"
 std::optional<SensorKind> ParseSensorKind(const std::string& name);
 std::vector<std::string> SensorKindNames();
 
@@ -38,11 +40,13 @@ struct LearnedSensorOptions {
 struct SensorConfig {
   SensorKind kind = SensorKind::kNoisy;
   sim::NoisySensorOptions noisy;  // kind noisy: its keys sit beside `kind`
-  LearnedSensorOptions learned;   // kind learned: likewise
+  LearnedSensorOptions learned;   // kinds learned and recorded: likewise
+  std::string images;             // kind recorded: the recording's folder ...
+  std::string poses;              // ... and its poses file (default: images/poses.csv)
   void Validate() const;          // throws core::ConfigError ("sensor.max_range", "sensor.model", ...)
 };
 
-// What the sensor is for: the world it observes (and renders), the render options of image-based kinds, the
+// What the sensor is for: the world it observes (and renders; none for a recording), the render options of image-based kinds, the
 // goal of goal-directed runs (passed to goal-conditioned detectors), and the seed of its randomness.
 struct SensorSetup {
   const core::World* world = nullptr;

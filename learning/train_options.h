@@ -1,6 +1,8 @@
 #pragma once
 // The options of `toponav train` (YAML section `train:`), header-only so the config reader can hold them
 // without linking the learning layer.
+#include <cmath>
+
 #include "core/option_fields.h"
 
 namespace toponav::learning {
@@ -11,6 +13,7 @@ struct TrainOptions {
   int batch_size = 8;
   int steps = 1000;             // Adam steps in all
   double learning_rate = 1e-3;
+  double decay_to = 1.0;        // the learning rate falls along a cosine to learning_rate * decay_to at the last step (1: constant)
   int validate_every = 100;     // steps between validations (and checkpoints)
   int threads = 2;              // CPU threads (0: LibTorch's default)
   bool cuda = false;            // use the GPU if this LibTorch has one
@@ -22,6 +25,7 @@ struct TrainOptions {
         {"batch_size", &O::batch_size, 1, 1024},
         {"steps", &O::steps, 1, 10000000},
         {"learning_rate", &O::learning_rate, 1e-7, 1.0},
+        {"decay_to", &O::decay_to, 1e-4, 1.0},
         {"validate_every", &O::validate_every, 1, 10000000},
         {"threads", &O::threads, 0, 256},
         {"cuda", &O::cuda},
@@ -30,6 +34,11 @@ struct TrainOptions {
     return fields;
   }
   void Validate() const { core::CheckRanges(*this, Fields(), "train."); }
+  // The learning rate of step 'step' (0-based) of 'steps'.
+  double LearningRate(int step) const {
+    const double t = steps > 1 ? double(step) / double(steps - 1) : 1.0;
+    return learning_rate * (decay_to + (1.0 - decay_to) * 0.5 * (1.0 + std::cos(3.14159265358979323846 * t)));
+  }
 };
 
 }  // namespace toponav::learning

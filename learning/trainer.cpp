@@ -99,7 +99,8 @@ double ValidationLoss(const VertexModel& model, const std::vector<Example>& val,
   return batches > 0 ? sum / batches : 0.0;
 }
 
-// What makes two runs the same run (the step count and validation cadence may change: a run can be extended).
+// What makes two runs the same run (the step count, the decay and the validation cadence may change: a run can
+// be extended).
 json OptionsJson(const TrainOptions& o) {
   return {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate}, {"seed", o.seed}};
 }
@@ -202,7 +203,7 @@ TrainResult Train(const sim::DatagenOptions& data, const sim::WorldOptions& worl
     for (const auto& [i, cols] : order.Batch(step)) rolled.push_back(Rolled(train[i], cols));
     std::vector<LabelledImage> batch;
     for (const auto& e : rolled) batch.push_back({&e.image, &e.labels});
-    loss_sum += model.TrainStep(batch, o.learning_rate);
+    loss_sum += model.TrainStep(batch, o.LearningRate(step));
     ++loss_count;
     const bool validate = (step + 1) % o.validate_every == 0 || step + 1 == o.steps;
     if (!validate && (step + 1) % report_every != 0) continue;

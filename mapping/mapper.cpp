@@ -48,6 +48,7 @@ const core::OptionFields<MapperOptions>& MapperOptions::Fields() {
       {"wall_skip_damping", &O::wall_skip_damping, 0.0, 1.0},
       {"wall_on_segment_tolerance", &O::wall_on_segment_tolerance, 0.0, 100.0},
       {"wall_past_detection_min", &O::wall_past_detection_min},
+      {"wall_evidence_min", &O::wall_evidence_min},
       {"edge_log_floor", &O::edge_log_floor, -100.0, -1e-6},
       {"mcmc_samples", &O::mcmc_samples, 0, 100000},
       {"mcmc_window", &O::mcmc_window, 1, 1000000},

@@ -50,7 +50,7 @@ TEST(SensorFactory, KindsAreReadByNameAndAnUnknownKindIsAConfigErrorNamingTheKey
   }
   EXPECT_EQ(ParseSensorKind("noisy"), SensorKind::kNoisy);
   EXPECT_FALSE(ParseSensorKind("Noisy"));
-  EXPECT_EQ(SensorKindNames(), (std::vector<std::string>{"noisy", "learned"}));
+  EXPECT_EQ(SensorKindNames(), (std::vector<std::string>{"noisy", "learned", "recorded"}));
 }
 
 TEST(SensorFactory, BadOptionsAreRejectedWhenTheSensorIsMade) {
