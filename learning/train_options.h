@@ -13,7 +13,8 @@ struct TrainOptions {
   int batch_size = 8;
   int steps = 1000;             // Adam steps in all
   double learning_rate = 1e-3;
-  double decay_to = 1.0;        // the learning rate falls along a cosine to learning_rate * decay_to at the last step (1: constant)
+  double decay_to = 1.0;        // from step decay_start the learning rate falls along a cosine to learning_rate * decay_to
+  int decay_start = 0;          // at the last step (decay_to 1: constant)
   int validate_every = 100;     // steps between validations (and checkpoints)
   int threads = 2;              // CPU threads (0: LibTorch's default)
   bool cuda = false;            // use the GPU if this LibTorch has one
@@ -26,6 +27,7 @@ struct TrainOptions {
         {"steps", &O::steps, 1, 10000000},
         {"learning_rate", &O::learning_rate, 1e-7, 1.0},
         {"decay_to", &O::decay_to, 1e-4, 1.0},
+        {"decay_start", &O::decay_start, 0, 10000000},
         {"validate_every", &O::validate_every, 1, 10000000},
         {"threads", &O::threads, 0, 256},
         {"cuda", &O::cuda},
@@ -36,7 +38,8 @@ struct TrainOptions {
   void Validate() const { core::CheckRanges(*this, Fields(), "train."); }
   // The learning rate of step 'step' (0-based) of 'steps'.
   double LearningRate(int step) const {
-    const double t = steps > 1 ? double(step) / double(steps - 1) : 1.0;
+    if (step <= decay_start) return learning_rate;
+    const double t = steps - 1 > decay_start ? double(step - decay_start) / double(steps - 1 - decay_start) : 1.0;
     return learning_rate * (decay_to + (1.0 - decay_to) * 0.5 * (1.0 + std::cos(3.14159265358979323846 * t)));
   }
 };

@@ -39,7 +39,6 @@ struct VertexModel::Impl {
   torch::Device device{torch::kCPU};
   internal::VertexNet net{nullptr};
   std::unique_ptr<torch::optim::Adam> adam;
-  double adam_lr = -1;
 
   // [B, 5, 32, 128] logits and the batch's labels [B, 32, 128].
   std::pair<torch::Tensor, torch::Tensor> Forward(const std::vector<LabelledImage>& batch) {
@@ -101,10 +100,8 @@ double VertexModel::Loss(const std::vector<LabelledImage>& batch) const {
 
 double VertexModel::TrainStep(const std::vector<LabelledImage>& batch, double lr) {
   impl_->net->train();
-  if (!impl_->adam || impl_->adam_lr != lr) {
-    impl_->adam = std::make_unique<torch::optim::Adam>(impl_->net->parameters(), torch::optim::AdamOptions(lr));
-    impl_->adam_lr = lr;
-  }
+  if (!impl_->adam) impl_->adam = std::make_unique<torch::optim::Adam>(impl_->net->parameters(), torch::optim::AdamOptions(lr));
+  for (auto& group : impl_->adam->param_groups()) static_cast<torch::optim::AdamOptions&>(group.options()).lr(lr);  // keeps the moments
   const auto [logits, cells] = impl_->Forward(batch);
   const auto loss = impl_->LossOf(logits, cells);
   impl_->adam->zero_grad();

@@ -58,3 +58,24 @@ TEST(Trainer, AKilledRunResumesFromItsCheckpointAndKeepsTheBestModel) {
 
 }  // namespace
 }  // namespace toponav::learning
+
+namespace toponav::learning {
+namespace {
+
+TEST(TrainOptions, TheLearningRateIsConstantUntilDecayStartThenFallsAlongACosineToDecayTo) {
+  TrainOptions o;
+  o.learning_rate = 1e-3;
+  o.steps = 101;
+  EXPECT_DOUBLE_EQ(o.LearningRate(0), 1e-3);
+  EXPECT_DOUBLE_EQ(o.LearningRate(100), 1e-3) << "decay_to 1: constant";
+  o.decay_to = 0.1;
+  o.decay_start = 50;
+  EXPECT_DOUBLE_EQ(o.LearningRate(30), 1e-3);
+  EXPECT_DOUBLE_EQ(o.LearningRate(50), 1e-3);
+  EXPECT_NEAR(o.LearningRate(75), 1e-3 * (0.1 + 0.9 * 0.5), 1e-12) << "half way down the cosine";
+  EXPECT_NEAR(o.LearningRate(100), 1e-4, 1e-12);
+  for (int s = 51; s <= 100; ++s) EXPECT_LT(o.LearningRate(s), o.LearningRate(s - 1));
+}
+
+}  // namespace
+}  // namespace toponav::learning

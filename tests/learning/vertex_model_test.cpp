@@ -74,6 +74,23 @@ TEST(VertexModel, ATinyTrainingRunLowersTheLoss) {
   EXPECT_LT(last, 0.7 * first) << "first " << first << ", after 40 steps " << last;
 }
 
+TEST(VertexModel, ANewLearningRateKeepsAdamsMoments) {
+  // A decaying rate changes every step; restarting Adam each time (its first step moves every weight by the
+  // full rate) would make a rate lower by a hair train very differently from the constant one.
+  const Examples e = MakeExamples();
+  VertexModel constant(Tiny(), 4), decaying(Tiny(), 4);
+  const auto both = e.batch();
+  for (int step = 0; step < 12; ++step) {  // alternating batches: gradients that Adam's moments average
+    const std::vector<LabelledImage> one{both[size_t(step % 2)]};
+    constant.TrainStep(one, 1e-3);
+    decaying.TrainStep(one, 1e-3 * (1.0 - 1e-6 * step));
+  }
+  const auto a = constant.Predict(e.images[1]).vertex, b = decaying.Predict(e.images[1]).vertex;
+  float worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+  EXPECT_LT(worst, 1e-3f);
+}
+
 TEST(VertexModel, SaveAndLoadGiveIdenticalOutputs) {
   VertexModel m(Tiny(), 3);
   const Examples e = MakeExamples();
