@@ -33,8 +33,8 @@ struct MapperOptions {
   // straight past the detection is the smaller of its ends' wall likelihoods (both ends must say a wall runs
   // on) if true, their average (the reference) if false.  (README, "The map", says why.)
   bool wall_past_detection_min = true;
-  // Every pair's evidence is the smaller of its ends' wall likelihoods, not their average: for a sensor whose
-  // wrong labels are confident (the learned one), one end saying "gap" is enough to keep a doorway open.
+  // Closed worlds: every pair's evidence is the smaller of its ends' wall likelihoods, not their average: for
+  // a sensor whose wrong labels are confident (the learned one), one end saying "gap" keeps a doorway open.
   bool wall_evidence_min = false;
   double edge_log_floor = -1.386;         // log 0.25: an edge term never costs more than this
   int mcmc_samples = 50;                  // proposals per SampleMostLikelyMap call (the paper's 50)

@@ -215,6 +215,31 @@ TEST(Mapper, AWallPastAnUnmappedJambNeedsBothEndsToSayWall) {
   EXPECT_TRUE(HasWall(DoorwayWithAnUnmappedFarJamb(true, true), {4, 0}, {10, 0}));
 }
 
+// Doorway jambs (4,0) and (6,0) seen side by side with confident wrong labels: the near one says a wall runs on
+// counter-clockwise (0.8), the far one leans only 55 % to "no wall clockwise".
+MapView DoorwayWithWrongLabels(bool evidence_min, bool open_world) {
+  MapperOptions o = SquareOptions();
+  o.wall_evidence_min = evidence_min;
+  if (open_world) o.open_region = core::Aabb2{{-20, -20}, {30, 30}};
+  return DriveThroughSquare(o, 6, [](int, const core::Pose2& pose) {
+    std::vector<Detection> d = SquareCorners(pose);
+    Detection near_jamb = Det(pose, {4, 0}, core::VertexLabel::kLeftGap), far_jamb = Det(pose, {6, 0}, core::VertexLabel::kRightGap);
+    near_jamb.labels = {0.0, 0.8, 0.2, 0.0};
+    far_jamb.labels = {0.55, 0.45, 0.0, 0.0};
+    d.push_back(near_jamb);
+    d.push_back(far_jamb);
+    return d;
+  });
+}
+
+TEST(Mapper, WithWallEvidenceMinOneEndSayingGapKeepsADoorwayOpenInClosedWorlds) {
+  EXPECT_TRUE(HasWall(DoorwayWithWrongLabels(false, false), {4, 0}, {6, 0})) << "averaged: 1 - (0.2 + 0.55) / 2 = 0.625";
+  const MapView view = DoorwayWithWrongLabels(true, false);
+  EXPECT_FALSE(HasWall(view, {4, 0}, {6, 0})) << "the smaller end: 0.45";
+  EXPECT_TRUE(HasWall(view, {0, 0}, {4, 0}));
+  EXPECT_TRUE(HasWall(DoorwayWithWrongLabels(true, true), {4, 0}, {6, 0})) << "open worlds keep the average";
+}
+
 // Detections of the corner (10,10) scattered around it, the first observation with a second (false) one
 // 1.2 units away: how many detections the vertex born from the false one collects.
 int DuplicateDetections(double count_bias) {
