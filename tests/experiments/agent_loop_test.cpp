@@ -58,7 +58,8 @@ TEST(AgentLoop, TheStepCapEndsARunThePolicyDoesNot) {
   LoopOptions o;
   o.max_steps = 7;
   o.mcmc_every = 3;
-  const LoopResult r = RunAgentLoop(w, Config{}, o, policy, 5);
+  const Config config;
+  const LoopResult r = RunAgentLoop(w, config, o, policy, 5);
   EXPECT_EQ(r.steps, 7);
   EXPECT_FALSE(r.ended_by_policy);
   EXPECT_EQ(r.mcmc_calls, 3) << "steps 0, 3 and 6";
@@ -67,7 +68,8 @@ TEST(AgentLoop, TheStepCapEndsARunThePolicyDoesNot) {
 TEST(AgentLoop, TheSameSeedGivesTheSameMap) {
   const core::World w = testing::RoomWorld(60, 30);
   WalkEast a(6), b(6);
-  const LoopResult ra = RunAgentLoop(w, Config{}, {}, a, 9), rb = RunAgentLoop(w, Config{}, {}, b, 9);
+  const Config config;
+  const LoopResult ra = RunAgentLoop(w, config, {}, a, 9), rb = RunAgentLoop(w, config, {}, b, 9);
   ASSERT_EQ(ra.final_view.vertices.size(), rb.final_view.vertices.size());
   for (size_t i = 0; i < ra.final_view.vertices.size(); ++i)
     EXPECT_EQ(ra.final_view.vertices[i].position.x, rb.final_view.vertices[i].position.x);

@@ -117,7 +117,8 @@ TEST(Recording, TheRecordedSensorReplaysItsFramesAndTheMapIsBuiltFromThem) {
   int images = 0;
   auto sensor = CreateRecordedSensor(ReadRecording(d), std::make_unique<GroundTruthDetector>(w, &images));
   EXPECT_THROW(sensor->Observe(core::Pose2{1e4, 1e4, 0}, 0), core::DataError) << "a pose the recording does not hold";
-  const RecordedMapResult r = BuildRecordedMap(ReadRecording(d), *sensor, Config{}.mapping, {});
+  const Config config;
+  const RecordedMapResult r = BuildRecordedMap(ReadRecording(d), *sensor, config.mapping, {});
   EXPECT_EQ(r.frames, 30);
   EXPECT_EQ(images, 30);
   EXPECT_EQ(r.path.size(), 30u);

@@ -49,8 +49,11 @@ TEST(VertexLabels, ARoomsCornersFromTheRayCasterAreLabelledCorners) {
   const RayCaster caster(w);
   const auto labels = RasterizeVertexLabels(caster.VisibleVertices(w.start, 100.0), core::RangeBearingGrid{});
   EXPECT_EQ(labels.num_vertices(), 4);
-  for (uint8_t c : labels.cells)
-    if (c != kNoVertex) EXPECT_EQ(c, 1 + int(core::VertexLabel::kCorner));
+  for (uint8_t c : labels.cells) {
+    if (c != kNoVertex) {
+      EXPECT_EQ(c, 1 + int(core::VertexLabel::kCorner));
+    }
+  }
 }
 
 }  // namespace
