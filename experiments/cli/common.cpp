@@ -26,6 +26,14 @@ experiments::Config LoadOrDefault(const std::string& path) {
   return path.empty() ? experiments::Config{} : experiments::LoadConfig(path);
 }
 
+experiments::Config LoadWithModel(const std::string& path, const std::string& model) {
+  experiments::Config cfg = LoadOrDefault(path);
+  if (!model.empty()) {
+    cfg.sensor.kind = experiments::SensorKind::kLearned;
+    cfg.sensor.learned.model = model;
+  }
+  return cfg;
+}
 
 void EnsureDir(const std::string& dir) {
   std::error_code ec;

@@ -17,6 +17,8 @@ double MsSince(Clock::time_point t0);
 
 core::WorldKind ParseKind(const std::string& text);  // --kind: a generated kind
 experiments::Config LoadOrDefault(const std::string& path);  // "" -> the defaults
+// The same, with the sensor made the learned one on 'model' when one is given (--model).
+experiments::Config LoadWithModel(const std::string& path, const std::string& model);
 using experiments::WriteTextFile;  // checked writes (experiments/results_io.h)
 void EnsureDir(const std::string& dir);
 

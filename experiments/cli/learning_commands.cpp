@@ -92,11 +92,7 @@ struct EvalSensorArgs {
 };
 
 int RunEvalSensor(const EvalSensorArgs& a) {
-  experiments::Config cfg = LoadOrDefault(a.config);
-  if (!a.model.empty()) {
-    cfg.sensor.kind = experiments::SensorKind::kLearned;
-    cfg.sensor.learned.model = a.model;
-  }
+  const experiments::Config cfg = LoadWithModel(a.config, a.model);
   experiments::SensorEvalOptions o;
   o.kind = ParseKind(a.kind);
   o.seeds = experiments::ParseSeeds(a.seeds);

@@ -60,11 +60,7 @@ nlohmann::json DetectionsJson(const core::Observation& ob) {
 
 // The ground truth at a pose; with --sensor (or --model), also what the config's sensor reports there.
 int RunObserve(const ObserveArgs& a) {
-  experiments::Config cfg = LoadOrDefault(a.config);
-  if (!a.model.empty()) {
-    cfg.sensor.kind = experiments::SensorKind::kLearned;
-    cfg.sensor.learned.model = a.model;
-  }
+  const experiments::Config cfg = LoadWithModel(a.config, a.model);
   const core::World w = WorldFromSource(a, cfg);
   const core::Pose2 pose = StartAtPose(w, a.pose).start;
   const sim::RayCaster caster(w);
