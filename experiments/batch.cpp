@@ -11,6 +11,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -22,6 +23,7 @@
 #include "core/error.h"
 #include "experiments/draw.h"
 #include "experiments/results_io.h"
+#include "experiments/navigation_trial.h"
 #include "experiments/trial.h"
 #include "sim/worlds.h"
 
@@ -31,7 +33,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::string TrialId::Key() const {
-  return std::string(core::ToString(kind)) + "/a" + std::to_string(agents) + "/s" + std::to_string(seed);
+  const std::string middle = planner.empty() ? "a" + std::to_string(agents) : planner;
+  return std::string(core::ToString(kind)) + "/" + middle + "/s" + std::to_string(seed);
 }
 
 std::vector<TrialId> ListTrials(const BenchOptions& bench, const std::vector<uint64_t>& seed_override) {
@@ -40,40 +43,85 @@ std::vector<TrialId> ListTrials(const BenchOptions& bench, const std::vector<uin
     for (int i = 0; i < bench.num_seeds; ++i) seeds.push_back(bench.first_seed + uint64_t(i));
   std::vector<TrialId> out;
   for (const auto& row : bench.rows)
-    for (uint64_t s : seeds) out.push_back({row.kind, row.agents, s});
+    for (uint64_t s : seeds) out.push_back({row.kind, row.agents, s, row.planner});
   return out;
 }
 
 namespace {
 
-// A trial's record; a failed one says why, and 'signal' (> 0) if its process was killed by one.
-json RecordJson(const TrialId& id, const TrialResult* r, const std::string& error, int signal = 0) {
+// A trial's record without results: a failed one says why, and 'signal' (> 0) if its process was killed by one.
+json RecordJson(const TrialId& id, const std::string& error, int signal = 0) {
   json j;
   j["id"] = id.Key();
   j["kind"] = core::ToString(id.kind);
   j["agents"] = id.agents;
   j["seed"] = id.seed;
-  j["ok"] = r != nullptr;
-  if (!r) {
-    j["error"] = error;
-    if (signal > 0) j["signal"] = signal;
-    return j;
-  }
-  j["success"] = r->success;
-  j["explored"] = r->explored;
-  j["steps"] = r->steps;
-  j["iou"] = r->iou;
-  double d = 0;
-  for (double x : r->distance) d += x;
-  j["distance"] = d;
-  j["distance_per_agent"] = r->distance;
-  j["nudges"] = r->nudges;
-  j["give_ups"] = r->give_ups;
-  j["end_reason"] = r->end_reason;
-  j["wall_time_s"] = r->wall_time_s;
-  j["time_s"] = {{"observe_and_map", r->time_map_s}, {"mcmc", r->time_mcmc_s}, {"known_space", r->time_known_s},
-                 {"plan_and_move", r->time_plan_s}};
+  if (!id.planner.empty()) j["planner"] = id.planner;
+  j["ok"] = error.empty();
+  if (!error.empty()) j["error"] = error;
+  if (signal > 0) j["signal"] = signal;
   return j;
+}
+
+json SearchJson(const TrialId& id, const TrialResult& r) {
+  json j = RecordJson(id, "");
+  j["success"] = r.success;
+  j["explored"] = r.explored;
+  j["steps"] = r.steps;
+  j["iou"] = r.iou;
+  double d = 0;
+  for (double x : r.distance) d += x;
+  j["distance"] = d;
+  j["distance_per_agent"] = r.distance;
+  j["nudges"] = r.nudges;
+  j["give_ups"] = r.give_ups;
+  j["end_reason"] = r.end_reason;
+  j["wall_time_s"] = r.wall_time_s;
+  j["time_s"] = {{"observe_and_map", r.time_map_s}, {"mcmc", r.time_mcmc_s}, {"known_space", r.time_known_s},
+                 {"plan_and_move", r.time_plan_s}};
+  return j;
+}
+
+json NavigationJson(const TrialId& id, const NavigationResult& r) {
+  json j = RecordJson(id, "");
+  j["success"] = r.reached;
+  j["explored"] = false;
+  j["steps"] = r.steps;
+  j["iou"] = r.iou;
+  j["distance"] = r.distance;
+  j["nudges"] = r.nudges;
+  j["end_reason"] = r.end_reason;
+  j["wall_time_s"] = r.wall_time_s;
+  return j;
+}
+
+using StepHook = std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)>;
+
+// Runs the trial 'id' names (a search, or goal-directed navigation with its planner): its record, and the final
+// map and paths for the picture.
+json RunTrial(const Config& config, const TrialId& id, const core::World& w, const StepHook& on_step,
+              mapping::MapView* view, std::vector<std::vector<core::Vec2>>* paths) {
+  if (id.planner.empty()) {
+    TrialOptions t;
+    t.num_agents = id.agents;
+    t.max_steps = config.bench.max_steps;
+    t.mcmc_every = config.bench.mcmc_every;
+    t.open_world_mcmc_every = config.open_world.mcmc_every;
+    t.on_step = on_step;
+    const TrialResult r = RunSearchTrial(w, config, t, id.seed, view);
+    *paths = r.paths;
+    return SearchJson(id, r);
+  }
+  NavigationTrialOptions n;
+  const auto planner = ParseGoalPlanner(id.planner);
+  TOPONAV_CHECK(planner, "trial " << id.Key() << " names no goal-directed planner");
+  n.planner = *planner;
+  n.max_steps = config.bench.max_steps;
+  n.mcmc_every = config.bench.mcmc_every;
+  n.on_step = on_step;
+  const NavigationResult r = RunNavigationTrial(w, config, n, id.seed, view);
+  *paths = {r.path};
+  return NavigationJson(id, r);
 }
 
 // Runs in the forked child: the trial, its picture, and one JSON line on 'fd'.
@@ -83,30 +131,26 @@ json RecordJson(const TrialId& id, const TrialResult* r, const std::string& erro
     if (id.Key() == o.crash_key) std::raise(SIGSEGV);
     if (id.Key() == o.fail_key) throw core::InternalError("injected failure for " + id.Key());
     const core::World w = sim::GenerateWorld(id.kind, config.worlds, id.seed);
-    TrialOptions t;
-    t.num_agents = id.agents;
-    t.max_steps = config.bench.max_steps;
-    t.mcmc_every = config.bench.mcmc_every;
-    t.open_world_mcmc_every = config.open_world.mcmc_every;
     std::string name = id.Key();
     std::replace(name.begin(), name.end(), '/', '_');
     std::unique_ptr<TrialVideo> video;
+    StepHook on_step;
     if (config.bench.videos) {
       const fs::path dir = fs::path(o.out_dir) / "videos";
       fs::create_directories(dir);
       video = std::make_unique<TrialVideo>(w, config.picture, (dir / (name + ".mp4")).string());
-      t.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video->AddFrame(v, paths); };
+      on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video->AddFrame(v, paths); };
     }
     mapping::MapView view;
-    const TrialResult r = RunSearchTrial(w, config, t, id.seed, &view);
+    std::vector<std::vector<core::Vec2>> paths;
+    line = RunTrial(config, id, w, on_step, &view, &paths).dump();
     if (config.bench.pictures) {
       const fs::path dir = fs::path(o.out_dir) / "pictures";
       fs::create_directories(dir);
-      DrawMapPicture(w, view, r.paths, config.picture, (dir / (name + ".png")).string());
+      DrawMapPicture(w, view, paths, config.picture, (dir / (name + ".png")).string());
     }
-    line = RecordJson(id, &r, "").dump();
   } catch (const std::exception& e) {
-    line = RecordJson(id, nullptr, e.what()).dump();
+    line = RecordJson(id, e.what()).dump();
   }
   line += "\n";
   for (size_t off = 0; off < line.size();) {
@@ -233,8 +277,8 @@ json Collect(Child& c, int status) {
   } catch (const json::exception&) {
   }
   if (WIFSIGNALED(status))  // killed (out of memory, pre-empted) or crashed: retried on resume
-    return RecordJson(c.id, nullptr, "killed by signal " + std::to_string(WTERMSIG(status)), WTERMSIG(status));
-  return RecordJson(c.id, nullptr, "exited with status " + std::to_string(WEXITSTATUS(status)) + " and no result");
+    return RecordJson(c.id, "killed by signal " + std::to_string(WTERMSIG(status)), WTERMSIG(status));
+  return RecordJson(c.id, "exited with status " + std::to_string(WEXITSTATUS(status)) + " and no result");
 }
 
 class Progress {
@@ -335,7 +379,7 @@ std::optional<TrialRecord> ParseRecord(const std::string& line, std::string* why
       *why = "unknown kind";
       return std::nullopt;
     }
-    r.id = {*kind, j.at("agents").get<int>(), j.at("seed").get<uint64_t>()};
+    r.id = {*kind, j.at("agents").get<int>(), j.at("seed").get<uint64_t>(), j.value("planner", std::string())};
     if (j.at("id").get<std::string>() != r.id.Key()) {
       *why = "its id does not match its kind, agents and seed";
       return std::nullopt;
@@ -394,6 +438,7 @@ void CheckOneBatch(const std::vector<std::string>& dirs) {
 std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records) {
   std::map<std::pair<int, int>, ReportRow> rows;
   for (const auto& r : records) {
+    if (!r.id.planner.empty()) continue;  // navigation trials: navigation_report.h
     ReportRow& row = rows[{int(r.id.kind), r.id.agents}];
     row.kind = r.id.kind;
     row.agents = r.id.agents;

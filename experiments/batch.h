@@ -16,7 +16,8 @@ struct TrialId {
   core::WorldKind kind = core::WorldKind::kLabyrinth;
   int agents = 1;
   uint64_t seed = 0;
-  std::string Key() const;  // "labyrinth/a1/s10000"
+  std::string planner;      // goal-directed navigation: the planner ("optimistic", ...); empty: a search
+  std::string Key() const;  // a search "labyrinth/a1/s10000", a navigation trial "guided_maze/optimistic/s10000"
 };
 
 // Every trial of the bench config, rows in order, seeds ascending ('seed_range' overrides the config's).
@@ -58,11 +59,11 @@ struct TrialRecord {
   bool ok = false;          // false: the trial threw or crashed ('error' says how)
   std::string error;
   int signal = 0;           // > 0: its process was killed by this signal (retried on resume)
-  bool success = false;
+  bool success = false;     // a search: explored with the IoU asked for; a navigation trial: reached the goal
   bool explored = false;
   int steps = 0;
   double iou = 0.0;
-  double distance = 0.0;    // summed over agents
+  double distance = 0.0;    // summed over agents (a navigation trial's cost)
   double wall_time_s = 0.0;
   std::string end_reason;
 };
@@ -83,6 +84,7 @@ struct ReportRow {
   double mean_wall_s = 0.0;   // per trial
   double ms_per_step = 0.0;   // all trials' wall time over all their steps
 };
+// Rows for the search trials (records without a planner).
 std::vector<ReportRow> Summarize(const std::vector<TrialRecord>& records);
 std::string MarkdownTable(const std::vector<ReportRow>& rows);
 std::string CsvTable(const std::vector<ReportRow>& rows);

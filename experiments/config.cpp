@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/geometry.h"
 #include "core/rng.h"
+#include "experiments/navigation_trial.h"
 #include "experiments/internal/yaml_reader.h"
 
 namespace toponav::experiments {
@@ -34,6 +35,17 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
 }
 
 void SearchOptions::Validate() const { core::CheckRanges(*this, Fields(), "search."); }
+
+const core::OptionFields<NavigationOptions>& NavigationOptions::Fields() {
+  using O = NavigationOptions;
+  static const core::OptionFields<O> fields{
+      {"goal_radius", &O::goal_radius, 0.01, 1000.0},
+      {"stuck_window", &O::stuck_window, 2, 100000},
+      {"stuck_span", &O::stuck_span, 0.0, 1000.0},
+      {"cut_off_steps", &O::cut_off_steps, 1, 100000},
+  };
+  return fields;
+}
 
 const core::OptionFields<OpenWorldOptions>& OpenWorldOptions::Fields() {
   using O = OpenWorldOptions;
@@ -117,6 +129,7 @@ void Validate(const Config& c) {
   InSection(c, "", [&] { c.search.Validate(); });
   InSection(c, "", [&] { c.render.Validate(); });
   InSection(c, "", [&] { c.motion.Validate(); });
+  InSection(c, "", [&] { core::CheckRanges(c.navigation, NavigationOptions::Fields(), "navigation."); });
   InSection(c, "", [&] { core::CheckRanges(c.open_world, OpenWorldOptions::Fields(), "open_world."); });
   InSection(c, "", [&] { core::CheckRanges(c.picture, PictureOptions::Fields(), "picture."); });
   InSection(c, "", [&] { core::CheckRanges(c.bench, BenchOptions::Fields(), "bench."); });
@@ -166,6 +179,9 @@ void ReadBench(YamlSection b, BenchOptions* bench) {
     row.Read("kind", &kind);
     r.kind = ReadWorldKind(row, "kind", kind);
     row.Read("agents", &r.agents, 1, 16);
+    row.Read("planner", &r.planner);
+    if (!r.planner.empty() && !ParseGoalPlanner(r.planner)) row.Fail("planner", r.planner, "not a goal-directed planner (optimistic)");
+    if (!r.planner.empty() && r.agents != 1) row.Fail("agents", std::to_string(r.agents), "navigation trials have one agent");
     row.Finish();
     bench->rows.push_back(r);
   }
@@ -223,6 +239,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadSection(top.Section("mapping"), &c.mapping);
   ReadSection(top.Section("planning"), &c.planning);
   ReadSection(top.Section("search"), &c.search);
+  ReadSection(top.Section("navigation"), &c.navigation);
   ReadSection(top.Section("open_world"), &c.open_world);
   ReadSection(top.Section("picture"), &c.picture);
   ReadBench(top.Section("bench"), &c.bench);

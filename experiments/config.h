@@ -27,9 +27,11 @@ struct DemoJob {
 };
 
 // A search benchmark (paper Table I): rows of (world kind, agent count), each run over the same seeds.
+// A row with a planner runs goal-directed navigation trials (one agent, start to goal) with that planner.
 struct BenchRow {
   core::WorldKind kind = core::WorldKind::kLabyrinth;
   int agents = 1;
+  std::string planner;  // "" (a search) or a goal-directed planner: "optimistic"
 };
 
 struct BenchOptions {
@@ -65,6 +67,15 @@ struct SearchOptions {
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };
 
+// When a goal-directed navigation trial ends (experiments/navigation_trial.h), YAML section `navigation:`.
+struct NavigationOptions {
+  double goal_radius = 5.4;   // reached: the agent within this of the goal (the reference's 3 steps of 1.8)
+  int stuck_window = 100;     // stuck: after this many steps, every position of the last this many ...
+  double stuck_span = 9.0;    // ... lies within this of each other (the reference: 100 poses, 5 steps)
+  int cut_off_steps = 12;     // the map leaves no way to the goal and nothing to explore this many steps in a row
+  static const core::OptionFields<NavigationOptions>& Fields();
+};
+
 // What differs in open worlds (the office park), YAML section `open_world:`: agents take the longer outdoor
 // step (the reference's outdoor motion primitive), and MCMC runs more often at the same proposals per step
 // (a call proposes mapping.mcmc_samples * mcmc_every / bench.mcmc_every, at least 1).
@@ -89,6 +100,7 @@ struct Config {
   mapping::MapperOptions mapping;
   planning::PlannerOptions planning;
   SearchOptions search;
+  NavigationOptions navigation;
   OpenWorldOptions open_world;
   DatagenOptions datagen;
   learning::TrainOptions train;

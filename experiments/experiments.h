@@ -3,6 +3,7 @@
 #include "experiments/config.h"
 #include "experiments/draw.h"
 #include "experiments/map_drive.h"
+#include "experiments/navigation_trial.h"
 #include "experiments/recorded.h"
 #include "experiments/sensor_factory.h"
 #include "experiments/trial.h"

@@ -2,6 +2,7 @@
 // info here; datagen, train and eval-sensor in experiments/cli/learning_commands.cpp.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "experiments/cli/learning_commands.h"
 #include "experiments/cli/sensing_commands.h"
 #include "experiments/cli_parse.h"
+#include "experiments/navigation_report.h"
 #include "experiments/experiments.h"
 #include "learning/learning.h"
 #include "mapping/polygon_set.h"
@@ -91,11 +93,40 @@ struct TrialArgs : WorldSource {
   std::string out = "results/trial";
   std::string video;
   std::string trace;
+  std::string planner;  // a goal-directed planner: a navigation trial from the world's start to its goal
+  int frames_every = 0;
   experiments::TrialOptions trial;
   std::optional<int> max_steps, mcmc_every, open_world_mcmc_every;  // unset: the config's
 };
 
+// A goal-directed navigation trial with the named planner (trial.png, and a frame every --frames-every steps).
+int RunNavigationCommand(const TrialArgs& a) {
+  const experiments::Config cfg = LoadOrDefault(a.config);
+  const auto planner = experiments::ParseGoalPlanner(a.planner);
+  if (!planner) throw core::ConfigError("<command line>", "--planner", a.planner, "not a goal-directed planner (optimistic)");
+  const uint64_t seed = experiments::ParseSeed(a.seed);
+  const core::World w = StartAtPose(WorldFromSource(a, cfg), a.pose);
+  EnsureDir(a.out);
+  experiments::NavigationTrialOptions n;
+  n.planner = *planner;
+  n.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
+  n.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
+  int step = 0;
+  if (a.frames_every > 0)
+    n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
+      if (step++ % a.frames_every == 0)
+        experiments::DrawMapPicture(w, v, paths, cfg.picture, (fs::path(a.out) / fmt::format("frame_{:04d}.png", step - 1)).string());
+    };
+  mapping::MapView view;
+  const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
+  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string());
+  fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, {:.1f} s -> {}\n", seed,
+             r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
+  return 0;
+}
+
 int RunTrialCommand(const TrialArgs& a) {
+  if (!a.planner.empty()) return RunNavigationCommand(a);
   const experiments::Config cfg = LoadOrDefault(a.config);
   const uint64_t seed = experiments::ParseSeed(a.seed);
   const core::World w = StartAtPose(WorldFromSource(a, cfg), a.pose);
@@ -163,15 +194,25 @@ int RunReport(const std::vector<std::string>& dirs, std::string out) {
   const auto records = experiments::ReadResults(dirs, &skipped);
   for (const auto& s : skipped) std::cerr << "warning: " << s << "\n";
   if (records.empty()) throw core::DataError(dirs.front(), "no trial results (*.jsonl) found");
-  const auto rows = experiments::Summarize(records);
   if (out.empty()) out = dirs.front();
   EnsureDir(out);
-  const std::string md = experiments::MarkdownTable(rows);
+  std::string md;
+  std::vector<std::string> wrote{"report.md"};
+  if (const auto rows = experiments::Summarize(records); !rows.empty()) {
+    md += experiments::MarkdownTable(rows);
+    WriteTextFile((fs::path(out) / "report.csv").string(), experiments::CsvTable(rows));
+    experiments::WriteStepsPlot(records, (fs::path(out) / "steps.png").string());
+    wrote.insert(wrote.end(), {"report.csv", "steps.png"});
+  }
+  if (const auto rows = experiments::SummarizeNavigation(records); !rows.empty()) {
+    md += (md.empty() ? "" : "\n") + experiments::NavigationMarkdown(rows);
+    WriteTextFile((fs::path(out) / "navigation.csv").string(), experiments::NavigationCsv(rows));
+    experiments::WriteCostScatter(records, (fs::path(out) / "costs.png").string());
+    wrote.insert(wrote.end(), {"navigation.csv", "costs.png"});
+  }
   WriteTextFile((fs::path(out) / "report.md").string(), md);
-  WriteTextFile((fs::path(out) / "report.csv").string(), experiments::CsvTable(rows));
-  experiments::WriteStepsPlot(records, (fs::path(out) / "steps.png").string());
-  fmt::print("{}\n{} trials from {} director{}; wrote {}/report.md, report.csv, steps.png\n", md, records.size(),
-             dirs.size(), dirs.size() == 1 ? "y" : "ies", out);
+  fmt::print("{}\n{} trials from {} director{}; wrote {}/{}\n", md, records.size(), dirs.size(),
+             dirs.size() == 1 ? "y" : "ies", out, fmt::join(wrote, ", "));
   return 0;
 }
 
@@ -256,7 +297,8 @@ CLI::App* AddWorldCommand(CLI::App& app, WorldArgs* a) {
 }
 
 CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
-  CLI::App* trial = app.add_subcommand("trial", "Run one search trial: 1 agent, or a team over distinct frontiers");
+  CLI::App* trial = app.add_subcommand("trial", "Run one search trial (1 agent, or a team over distinct frontiers), or with "
+                                                 "--planner one goal-directed navigation trial");
   AddWorldSourceOptions(trial, a, "YAML config (sensor:, mapping:, motion:)");
   trial->add_option("--agents", a->trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
   trial->add_option("--max-steps", a->max_steps, "Step cap (default: the config's bench.max_steps)")->check(CLI::Range(1, 100000));
@@ -269,6 +311,9 @@ CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
   trial->add_option("--out", a->out, "Output directory: trial.png")->capture_default_str();
   trial->add_option("--video", a->video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
   trial->add_option("--trace", a->trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals");
+  trial->add_option("--planner", a->planner, "Run goal-directed navigation (start to goal, one agent) with this planner instead: optimistic");
+  trial->add_option("--frames-every", a->frames_every, "Navigation: also draw the map every this many steps (frame_NNNN.png)")
+      ->check(CLI::Range(1, 100000));
   return trial;
 }
 

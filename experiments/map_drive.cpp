@@ -43,12 +43,18 @@ class FollowPath : public AgentPolicy {
   size_t next_ = 1;
 };
 
+// Auto (0): 20, or half the maze's cell pitch in a guided maze (a coarser grid skips whole corridors).
+double TourSpacing(const core::World& world, const MapDriveOptions& o) {
+  if (o.tour_spacing > 0) return o.tour_spacing;
+  return world.kind == core::WorldKind::kGuidedMaze ? 11.0 : 20.0;
+}
+
 std::vector<core::Vec2> DrivePath(const core::World& world, const Config& config, const MapDriveOptions& o) {
   std::vector<core::Vec2> path;
   const double clearance = config.motion.agent_radius + 1.0;  // room to pass clutter
   if (o.path == "guide") path = world.guide_path;
   else if (o.path == "goal") path = sim::FreePath(world, world.start.position(), world.goal, clearance);
-  else if (o.path == "tour") path = sim::CoverageTour(world, world.start.position(), o.tour_spacing, clearance);
+  else if (o.path == "tour") path = sim::CoverageTour(world, world.start.position(), TourSpacing(world, o), clearance);
   else throw core::ConfigError("<command line>", "--path", o.path, "expected tour, guide or goal");
   if (path.size() < 2) throw core::DataError("<world>", "no drivable path of kind '" + o.path + "'");
   return path;
@@ -99,6 +105,12 @@ void ScoreWalls(const core::World& world, MapDriveResult* out) {
       ok = (a.index + 1) % n == b.index || (b.index + 1) % n == a.index;
     }
     r.false_walls += !ok;
+    // Across free space: somewhere along it (sampled every unit) deeper than kAcrossDepth into true free space.
+    const double length = core::Distance(w.pa, w.pb);
+    bool across = false;
+    for (double t = 0; t <= length && !across; t += 1.0)
+      across = core::SignedDistance(world, w.pa + (w.pb - w.pa) * (t / std::max(length, 1e-9)), false) > kAcrossDepth;
+    r.walls_across_free_space += across;
   }
 }
 

@@ -15,7 +15,7 @@ namespace toponav::experiments {
 
 struct MapDriveOptions {
   std::string path = "tour";   // "tour" (visit the whole free space), "guide" (the guide path), "goal" (start to goal)
-  double tour_spacing = 20.0;  // tour waypoint grid spacing
+  double tour_spacing = 0.0;   // tour waypoint grid spacing; 0: 20, or 11 in a guided maze (half its cell pitch)
   int max_steps = 3000;        // stop after this many agent steps even if the path goes on
   int mcmc_every = 5;          // run MCMC every this many steps (and once at the end); 0: never
   uint64_t seed = 0;           // sensor and MCMC randomness
@@ -31,12 +31,15 @@ struct MapDriveResult {
   double mean_vertex_error = 0.0; // mean distance of the other map vertices to the nearest true vertex
   int map_walls = 0;
   int false_walls = 0;            // map walls whose ends are not (within the radius) the ends of one true wall
+  int walls_across_free_space = 0;  // map walls reaching deeper than kAcrossDepth into true free space (a
+                                    // wall across a corridor or doorway, not a wall a little off its place)
   double log_posterior = 0.0;     // of the final map
   double mean_update_ms = 0.0;    // Mapper::AddObservation + View (known space, frontiers)
   double mean_mcmc_ms = 0.0;      // Mapper::SampleMostLikelyMap
 };
 
 constexpr double kVertexMatchRadius = 5.0;
+constexpr double kAcrossDepth = 3.0;
 
 MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& options);
 

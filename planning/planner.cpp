@@ -5,7 +5,12 @@
 namespace toponav::planning {
 
 const char* ToString(PlannerKind kind) {
-  return kind == PlannerKind::kNearestFrontier ? "nearest_frontier" : "team_frontiers";
+  switch (kind) {
+    case PlannerKind::kNearestFrontier: return "nearest_frontier";
+    case PlannerKind::kTeamFrontiers: return "team_frontiers";
+    case PlannerKind::kOptimistic: return "optimistic";
+  }
+  return "?";
 }
 
 namespace {
@@ -34,11 +39,32 @@ class TeamFrontierPlanner : public Planner {
   std::string name() const override { return ToString(PlannerKind::kTeamFrontiers); }
 };
 
+class OptimisticPlanner : public Planner {
+ public:
+  std::vector<FrontierChoice> Plan(const PlanningProblem& p) override {
+    CheckProblem(p);
+    TOPONAV_CHECK(p.goal, "the optimistic planner needs a goal");
+    std::vector<FrontierChoice> out;
+    for (const auto& agent : p.agents) {
+      FrontierChoice c;
+      c.path = p.graph->Plan(agent, *p.goal);
+      c.status = c.path.status;
+      out.push_back(std::move(c));
+    }
+    return out;
+  }
+  std::string name() const override { return ToString(PlannerKind::kOptimistic); }
+};
+
 }  // namespace
 
 std::unique_ptr<Planner> CreatePlanner(PlannerKind kind) {
-  if (kind == PlannerKind::kNearestFrontier) return std::make_unique<NearestFrontierPlanner>();
-  return std::make_unique<TeamFrontierPlanner>();
+  switch (kind) {
+    case PlannerKind::kNearestFrontier: return std::make_unique<NearestFrontierPlanner>();
+    case PlannerKind::kTeamFrontiers: return std::make_unique<TeamFrontierPlanner>();
+    case PlannerKind::kOptimistic: return std::make_unique<OptimisticPlanner>();
+  }
+  return nullptr;
 }
 
 std::unique_ptr<Planner> CreateSearchPlanner(int num_agents) {

@@ -31,11 +31,13 @@ class Planner {
   virtual std::string name() const = 0;
 };
 
-enum class PlannerKind { kNearestFrontier, kTeamFrontiers };
-const char* ToString(PlannerKind kind);  // "nearest_frontier", "team_frontiers"
+enum class PlannerKind { kNearestFrontier, kTeamFrontiers, kOptimistic };
+const char* ToString(PlannerKind kind);  // "nearest_frontier", "team_frontiers", "optimistic"
 
 // kNearestFrontier: each agent its own cheapest reachable frontier (ChooseNearestFrontier); kTeamFrontiers:
-// agents to distinct frontiers at the least total cost (AssignFrontiers).
+// agents to distinct frontiers at the least total cost (AssignFrontiers); kOptimistic (goal-directed
+// navigation's baseline, lsp.md §4.2): each agent the shortest path to the goal on the problem's graph, on
+// which unknown space counts as free (frontier_id -1; kNoPath when the map's walls cut the goal off).
 std::unique_ptr<Planner> CreatePlanner(PlannerKind kind);
 // The frontier planner a search with 'num_agents' agents uses: the nearest frontier for one, the team
 // assignment for more.

@@ -408,7 +408,7 @@ World GenerateGuidedMaze(const GuidedMazeOptions& o, uint64_t seed) {
   TOPONAV_CHECK(internal::SplitBoundaryAndObstacles(internal::TraceFreeRegion(xs, ys, fine), &w.boundary,
                                                     &w.obstacles),
                 "maze free space is not connected");
-  w.bounds = {{0, 0}, {xs.back(), ys.back()}};
+  w.bounds = core::Bounds(w.boundary);  // the free space's extent (as in the labyrinth), not the outer border's
   auto center = [&](int c) {
     const int x = c % nx, y = c / nx;
     return Vec2{o.border + x * pitch + o.corridor_width / 2, o.border + y * pitch + o.corridor_width / 2};

@@ -237,7 +237,7 @@ int RunMap(MapArgs a) {
   EnsureDir(a.out);
   const std::vector<uint64_t> seeds =
       a.seeds.empty() ? std::vector<uint64_t>{experiments::ParseSeed(a.seed)} : experiments::ParseSeeds(a.seeds);
-  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0;
+  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0, across_sum = 0;
   for (uint64_t seed : seeds) {
     WorldSource src = a;
     src.seed = std::to_string(seed);
@@ -259,6 +259,7 @@ int RunMap(MapArgs a) {
     j["rejected_vertices"] = r.view.rejected.size();
     j["map_walls"] = r.map_walls;
     j["false_walls"] = r.false_walls;
+    j["walls_across_free_space"] = r.walls_across_free_space;
     j["frontiers"] = r.view.frontiers.size();
     j["log_posterior"] = r.log_posterior;
     j["mean_update_ms"] = r.mean_update_ms;
@@ -266,20 +267,23 @@ int RunMap(MapArgs a) {
     j["wall_time_ms"] = ms;
     WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), j.dump(1) + "\n");
     fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
-               "walls {:>3} ({} false)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
+               "walls {:>3} ({} false, {} across free space)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
                seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
-               r.map_walls, r.false_walls, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
+               r.map_walls, r.false_walls, r.walls_across_free_space, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
     iou_sum += r.known_space_iou;
     false_sum += r.false_vertices;
     error_sum += r.mean_vertex_error * (r.map_vertices - r.false_vertices);  // pooled over matched vertices
     vert_sum += r.map_vertices;
     wall_false += r.false_walls;
+    across_sum += r.walls_across_free_space;
     wall_sum += r.map_walls;
   }
   if (seeds.size() > 1)
-    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} %, vertex error {:.2f}\n",
+    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} % ({} across free "
+               "space), vertex error {:.2f}\n",
                seeds.size(), iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
-               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), error_sum / std::max(1.0, vert_sum - false_sum));
+               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), across_sum,
+               error_sum / std::max(1.0, vert_sum - false_sum));
   return 0;
 }
 
@@ -317,6 +321,7 @@ CLI::App* AddMapCommand(CLI::App& app, MapArgs* a) {
   map->add_option("--seeds", a->seeds, "Several seeds A-B (files then named map_sSEED)");
   map->add_option("--path", a->drive.path, "Path to drive: tour (whole free space), guide, goal")->capture_default_str();
   map->add_option("--steps", a->drive.max_steps, "At most this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
+  map->add_option("--tour-spacing", a->drive.tour_spacing, "Tour: visit the free points of a grid this fine (world units; default 20, 11 in a guided maze)")->check(CLI::Range(1.0, 1000.0));
   map->add_option("--mcmc-every", a->drive.mcmc_every, "MCMC every this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
   map->add_flag("--no-mcmc", a->no_mcmc, "Build the map without the posterior (every potential vertex kept)");
   map->add_option("--out", a->out, "Output directory: map.png and map.json")->capture_default_str();

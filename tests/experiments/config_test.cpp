@@ -92,6 +92,7 @@ TEST(Config, EachKeysRangeIsDeclaredOnceForTheReaderAndValidate) {
   ExpectOneRangePerKey<sim::MotionOptions>("motion", [](Config& c) -> auto& { return c.motion; });
   ExpectOneRangePerKey<sim::RenderOptions>("render", [](Config& c) -> auto& { return c.render; });
   ExpectOneRangePerKey<OpenWorldOptions>("open_world", [](Config& c) -> auto& { return c.open_world; });
+  ExpectOneRangePerKey<NavigationOptions>("navigation", [](Config& c) -> auto& { return c.navigation; });
   ExpectOneRangePerKey<BenchOptions>("bench", [](Config& c) -> auto& { return c.bench; });
   ExpectOneRangePerKey<PictureOptions>("picture", [](Config& c) -> auto& { return c.picture; });
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "planning/planner.h"
+#include "core/error.h"
 
 namespace toponav::planning {
 namespace {
@@ -148,6 +149,22 @@ TEST(Planner, SearchPlannersAreTheNearestFrontierForOneAgentAndTheAssignmentForA
   const std::vector<FrontierTarget> none;
   p.targets = &none;
   EXPECT_EQ(one->Plan(p)[0].status, PlanStatus::kNothingToExplore);
+}
+
+TEST(Planner, OptimisticPlannerHeadsForTheGoalThroughUnknownSpaceAndNeedsAGoal) {
+  const mapping::MapView view = OpenSquare();
+  const VisibilityGraph g(view, {}, false);
+  const std::vector<FrontierTarget> targets{Target(1, {80, 50})};
+  PlanningProblem p{&view, &g, &targets, {{50, 50}}, std::nullopt};
+  auto optimistic = CreatePlanner(PlannerKind::kOptimistic);
+  EXPECT_EQ(optimistic->name(), "optimistic");
+  EXPECT_THROW(optimistic->Plan(p), core::InternalError);
+  p.goal = core::Vec2{50, 150};  // beyond the known square
+  const auto c = optimistic->Plan(p);
+  ASSERT_EQ(c.size(), 1u);
+  ASSERT_EQ(c[0].status, PlanStatus::kFound);
+  EXPECT_EQ(c[0].frontier_id, -1);
+  EXPECT_NEAR(c[0].path.cost, 100.0, 1e-6) << "straight through unknown space";
 }
 
 }  // namespace

@@ -144,7 +144,8 @@ TEST(GuidedMaze, GuidePathRunsInsideCorridorsFromStartToGoal) {
       }
     // A spanning-tree maze is simply connected: one boundary ring and no free-standing obstacles.
     EXPECT_TRUE(w.obstacles.empty());
-    EXPECT_NEAR(w.bounds.width(), 2 * o.border + (o.cells_x - 1) * (o.corridor_width + o.wall_thickness) + o.corridor_width, 1e-9);
+    // The bounds are the free space's extent (the outer border is wall, not part of the region agents map).
+    EXPECT_NEAR(w.bounds.width(), (o.cells_x - 1) * (o.corridor_width + o.wall_thickness) + o.corridor_width, 1e-9);
   }
 }
 

@@ -1,0 +1,159 @@
+#include "experiments/navigation_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace toponav::experiments {
+
+namespace {
+
+constexpr const char* kBaseline = "optimistic";
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+using Key = std::pair<int, std::string>;  // kind, planner; the baseline sorts first
+Key RowKey(const TrialRecord& r) { return {int(r.id.kind), r.id.planner == kBaseline ? "" : r.id.planner}; }
+
+// Seed -> cost of the finished trials of (kind, planner).
+std::map<uint64_t, double> Costs(const std::vector<TrialRecord>& records, int kind, const std::string& planner) {
+  std::map<uint64_t, double> out;
+  for (const auto& r : records)
+    if (r.ok && int(r.id.kind) == kind && r.id.planner == planner) out[r.id.seed] = r.distance;
+  return out;
+}
+
+void SetReduction(const std::vector<TrialRecord>& records, NavigationReportRow* row) {
+  row->reduction = kNaN;
+  if (row->planner == kBaseline) return;
+  const auto base = Costs(records, int(row->kind), kBaseline), mine = Costs(records, int(row->kind), row->planner);
+  double b = 0, m = 0;
+  for (const auto& [seed, cost] : mine) {
+    const auto it = base.find(seed);
+    if (it == base.end()) continue;
+    b += it->second;
+    m += cost;
+    ++row->paired;
+  }
+  if (row->paired > 0 && b > 0) row->reduction = (b - m) / b;
+}
+
+}  // namespace
+
+std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialRecord>& records) {
+  std::map<Key, NavigationReportRow> rows;
+  for (const auto& r : records) {
+    if (r.id.planner.empty()) continue;
+    NavigationReportRow& row = rows[RowKey(r)];
+    row.kind = r.id.kind;
+    row.planner = r.id.planner;
+    ++row.trials;
+    if (!r.ok) {
+      ++row.failed;
+      continue;
+    }
+    row.reached += r.success;
+    row.total_cost += r.distance;
+    row.mean_steps += r.steps;
+    row.mean_iou += r.iou;
+    row.mean_wall_s += r.wall_time_s;
+  }
+  std::vector<NavigationReportRow> out;
+  for (auto& [k, row] : rows) {
+    const int ok = row.trials - row.failed;
+    if (ok > 0) {
+      row.mean_cost = row.total_cost / ok;
+      row.mean_steps /= ok;
+      row.mean_iou /= ok;
+      row.mean_wall_s /= ok;
+    }
+    SetReduction(records, &row);
+    out.push_back(row);
+  }
+  return out;
+}
+
+std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows) {
+  std::ostringstream os;
+  os << "| environment | planner | reached goal | mean cost | total cost | reduction vs optimistic | mean steps | mean IoU "
+        "| failed runs | s/trial |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    char reduction[64] = "-";
+    if (!std::isnan(r.reduction)) std::snprintf(reduction, sizeof reduction, "%.1f %% (%d seeds)", 100 * r.reduction, r.paired);
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %.1f | %.4f | %d | %.1f |\n", core::ToString(r.kind),
+                  r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction, r.mean_steps, r.mean_iou,
+                  r.failed, r.mean_wall_s);
+    os << buf;
+  }
+  return os.str();
+}
+
+std::string NavigationCsv(const std::vector<NavigationReportRow>& rows) {
+  std::ostringstream os;
+  os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,mean_steps,mean_iou,mean_wall_s\n";
+  for (const auto& r : rows)
+    os << core::ToString(r.kind) << "," << r.planner << "," << r.trials << "," << r.reached << "," << r.failed << ","
+       << r.mean_cost << "," << r.total_cost << "," << r.reduction << "," << r.paired << "," << r.mean_steps << ","
+       << r.mean_iou << "," << r.mean_wall_s << "\n";
+  return os.str();
+}
+
+namespace {
+
+void DrawPanel(cv::Mat& img, int left, const std::string& title, const std::vector<std::pair<double, double>>& points,
+               double max_cost) {
+  const int size = 420, margin = 45;
+  const auto px = [&](double x, double y) {
+    return cv::Point(left + margin + int((size - margin - 10) * x / max_cost), size - margin - int((size - margin - 30) * y / max_cost));
+  };
+  const cv::Scalar grey(170, 170, 170), black(0, 0, 0);
+  cv::rectangle(img, px(0, max_cost), px(max_cost, 0), grey, 1);
+  cv::line(img, px(0, 0), px(max_cost, max_cost), cv::Scalar(60, 160, 60), 1, cv::LINE_AA);
+  for (const auto& [x, y] : points) cv::circle(img, px(x, y), 3, cv::Scalar(200, 100, 20), cv::FILLED, cv::LINE_AA);
+  cv::putText(img, title, {left + 8, 16}, cv::FONT_HERSHEY_SIMPLEX, 0.42, black, 1, cv::LINE_AA);
+  cv::putText(img, "optimistic cost ->", {left + margin + 10, size - 12}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1, cv::LINE_AA);
+  char top[32];
+  std::snprintf(top, sizeof top, "%.0f", max_cost);
+  cv::putText(img, top, {left + 4, px(0, max_cost).y + 10}, cv::FONT_HERSHEY_SIMPLEX, 0.35, black, 1, cv::LINE_AA);
+  cv::putText(img, "0", {left + margin - 14, size - margin}, cv::FONT_HERSHEY_SIMPLEX, 0.35, black, 1, cv::LINE_AA);
+}
+
+}  // namespace
+
+void WriteCostScatter(const std::vector<TrialRecord>& records, const std::string& png_path) {
+  std::vector<std::pair<std::string, std::vector<std::pair<double, double>>>> panels;
+  double max_cost = 1.0;
+  for (const auto& row : SummarizeNavigation(records)) {
+    if (row.planner == kBaseline) continue;
+    const auto base = Costs(records, int(row.kind), kBaseline), mine = Costs(records, int(row.kind), row.planner);
+    std::vector<std::pair<double, double>> points;
+    for (const auto& [seed, cost] : mine)
+      if (base.count(seed)) {
+        points.push_back({base.at(seed), cost});
+        max_cost = std::max({max_cost, base.at(seed), cost});
+      }
+    char title[160];
+    std::snprintf(title, sizeof title, "%s: %s cost (y) vs optimistic (x), %.1f %% less", core::ToString(row.kind),
+                  row.planner.c_str(), std::isnan(row.reduction) ? 0.0 : 100 * row.reduction);
+    panels.push_back({title, points});
+  }
+  if (panels.empty()) return;
+  cv::Mat img(420, 420 * int(panels.size()), CV_8UC3, cv::Scalar(255, 255, 255));
+  for (size_t i = 0; i < panels.size(); ++i) DrawPanel(img, 420 * int(i), panels[i].first, panels[i].second, 1.05 * max_cost);
+  bool ok = false;
+  try {
+    ok = cv::imwrite(png_path, img);
+  } catch (const cv::Exception& e) {
+    throw core::DataError(png_path, std::string("cannot write the picture: ") + e.what());
+  }
+  if (!ok) throw core::DataError(png_path, "cannot write the picture");
+}
+
+}  // namespace toponav::experiments

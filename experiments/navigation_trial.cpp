@@ -1,0 +1,132 @@
+#include "experiments/navigation_trial.h"
+
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <memory>
+
+#include "core/error.h"
+#include "experiments/agent_loop.h"
+#include "experiments/map_drive.h"
+#include "planning/search_policy.h"
+
+namespace toponav::experiments {
+
+using core::Vec2;
+
+namespace {
+
+// True when every position of the window lies within 'span' of each other (the reference's stuck test).
+bool Huddled(const std::deque<Vec2>& window, double span) {
+  for (size_t i = 0; i < window.size(); ++i)
+    for (size_t j = i + 1; j < window.size(); ++j)
+      if (core::Distance(window[i], window[j]) > span) return false;
+  return true;
+}
+
+// The view with the region's edges as walls: the region of interest (the maze's extent) is known, and a
+// long outer wall whose far end lies beyond the sensor's range never becomes a map wall, so the optimistic
+// graph would lead around its near end out of the world.
+mapping::MapView WithRegionWalls(const mapping::MapView& view, const core::Aabb2& region) {
+  mapping::MapView v = view;
+  const Vec2 a = region.min, c = region.max, b{c.x, a.y}, d{a.x, c.y};
+  for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) v.walls.push_back({-1, -1, p, q, 1.0});
+  return v;
+}
+
+// The goal-directed policy: the planner's way to the goal every step; where the map cuts the goal off, the
+// nearest frontier (exploring may show the cut to be a map error); stuck agents are nudged as in a search.
+class NavigationPolicy : public AgentPolicy {
+ public:
+  NavigationPolicy(const core::World& world, const Config& config, planning::PlannerKind kind)
+      : goal_(world.goal),
+        region_(world.bounds),
+        options_(config.navigation),
+        planning_(config.planning),
+        planner_(planning::CreatePlanner(kind)),
+        stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length) {}
+
+  bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
+    const Vec2 at = state.poses[0].position();
+    if (core::Distance(at, goal_) <= options_.goal_radius) return End("goal");
+    window_.push_back(at);
+    if (int(window_.size()) > options_.stuck_window) window_.pop_front();
+    if (int(window_.size()) == options_.stuck_window && Huddled(window_, options_.stuck_span)) return End("stuck");
+    const mapping::MapView view = WithRegionWalls(*state.view, region_);
+    const planning::VisibilityGraph graph(view, planning_, false);
+    const std::vector<planning::FrontierTarget> targets = planning::FrontierTargets(*state.view, planning_);
+    const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
+    choice_ = planner_->Plan(problem).at(0);
+    if (choice_.status != planning::PlanStatus::kFound) choice_ = planning::ChooseNearestFrontier(graph, targets, at);
+    cut_off_ = choice_.status == planning::PlanStatus::kFound ? 0 : cut_off_ + 1;
+    if (cut_off_ >= options_.cut_off_steps) return End("cut_off");
+    if (choice_.status == planning::PlanStatus::kFound)
+      (*paths)[0].assign(choice_.path.points.begin() + 1, choice_.path.points.end());
+    return true;
+  }
+
+  sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& step, sim::MotionSim& motion,
+                            core::Rng& rng) override {
+    const bool has_path = choice_.status == planning::PlanStatus::kFound && choice_.path.points.size() > 1;
+    const bool stuck = stuck_.NoHeadway((*state.trails)[0], has_path, !has_path, step.pose.position(), step.distance);
+    if (!stuck_.Record(agent, stuck)) return step;
+    const double angle = rng.Uniform(-core::kPi, core::kPi);
+    ++nudges_;
+    return motion.Nudge(agent, Vec2{std::cos(angle), std::sin(angle)} * state.step_length);
+  }
+
+  const std::string& end_reason() const { return end_reason_; }
+  int nudges() const { return nudges_; }
+
+ private:
+  bool End(const char* reason) {
+    end_reason_ = reason;
+    return false;
+  }
+
+  Vec2 goal_;
+  core::Aabb2 region_;
+  NavigationOptions options_;
+  planning::PlannerOptions planning_;
+  std::unique_ptr<planning::Planner> planner_;
+  planning::StuckMonitor stuck_;
+  planning::FrontierChoice choice_;
+  std::deque<Vec2> window_;
+  int cut_off_ = 0, nudges_ = 0;
+  std::string end_reason_ = "step_cap";
+};
+
+}  // namespace
+
+std::optional<planning::PlannerKind> ParseGoalPlanner(const std::string& name) {
+  for (const auto kind : {planning::PlannerKind::kOptimistic})
+    if (name == planning::ToString(kind)) return kind;
+  return std::nullopt;
+}
+
+NavigationResult RunNavigationTrial(const core::World& world, const Config& config, const NavigationTrialOptions& o,
+                                    uint64_t seed, mapping::MapView* final_view) {
+  const auto t0 = std::chrono::steady_clock::now();
+  NavigationPolicy policy(world, config, o.planner);
+  LoopOptions lo;
+  lo.max_steps = o.max_steps;
+  lo.mcmc_every = o.mcmc_every;
+  lo.goal = world.goal;
+  lo.on_step = o.on_step;
+  const LoopResult loop = RunAgentLoop(world, config, lo, policy, seed);
+  NavigationResult r;
+  r.seed = seed;
+  r.planner = planning::ToString(o.planner);
+  r.end_reason = policy.end_reason();
+  r.reached = r.end_reason == "goal";
+  r.steps = loop.steps;
+  r.distance = loop.distance.at(0);
+  r.nudges = policy.nudges();
+  r.path = loop.paths.at(0);
+  r.iou = KnownSpaceIoU(world, loop.final_view);
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (final_view) *final_view = loop.final_view;
+  return r;
+}
+
+}  // namespace toponav::experiments

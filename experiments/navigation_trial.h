@@ -1,0 +1,48 @@
+#pragma once
+// One goal-directed navigation trial (paper Sec. V): one agent from the world's start to its goal on the
+// shared agent loop, every step a goal-directed planner (the optimistic baseline, Learned Subgoal Planning)
+// choosing the way on the map built so far.  The trial ends when the agent is within
+// navigation.goal_radius of the goal, is stuck, finds the goal cut off, or reaches the step cap; its cost is
+// the distance travelled.  A trial is a pure function of (world, config, planner, seed).
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/world.h"
+#include "experiments/config.h"
+#include "planning/planner.h"
+
+namespace toponav::experiments {
+
+// The goal-directed planners a trial (a bench row's `planner:`) may name: "optimistic"; nullopt otherwise.
+std::optional<planning::PlannerKind> ParseGoalPlanner(const std::string& name);
+
+struct NavigationTrialOptions {
+  planning::PlannerKind planner = planning::PlannerKind::kOptimistic;
+  int max_steps = 600;   // step cap (the reference's maze runs: 600 iterations)
+  int mcmc_every = 5;    // MCMC cadence in steps (0: never)
+  // Called after every step with the map the planner used and the path so far, and once more with the final
+  // map (videos).
+  std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
+};
+
+struct NavigationResult {
+  uint64_t seed = 0;
+  std::string planner;
+  bool reached = false;           // within navigation.goal_radius of the goal
+  int steps = 0;
+  double distance = 0.0;          // travelled: the trial's cost
+  std::string end_reason;         // "goal", "stuck", "cut_off" (no way to the goal, nothing to explore), "step_cap"
+  int nudges = 0;
+  double iou = 0.0;               // known space of the final map vs the true free space
+  double wall_time_s = 0.0;
+  std::vector<core::Vec2> path;
+};
+
+NavigationResult RunNavigationTrial(const core::World& world, const Config& config,
+                                    const NavigationTrialOptions& options, uint64_t seed,
+                                    mapping::MapView* final_view = nullptr);
+
+}  // namespace toponav::experiments
