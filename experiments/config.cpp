@@ -130,6 +130,7 @@ void Validate(const Config& c) {
   InSection(c, "", [&] { c.render.Validate(); });
   InSection(c, "", [&] { c.motion.Validate(); });
   InSection(c, "", [&] { core::CheckRanges(c.navigation, NavigationOptions::Fields(), "navigation."); });
+  InSection(c, "", [&] { core::CheckRanges(c.lsp, planning::LspOptions::Fields(), "lsp."); });
   InSection(c, "", [&] { core::CheckRanges(c.open_world, OpenWorldOptions::Fields(), "open_world."); });
   InSection(c, "", [&] { core::CheckRanges(c.picture, PictureOptions::Fields(), "picture."); });
   InSection(c, "", [&] { core::CheckRanges(c.bench, BenchOptions::Fields(), "bench."); });
@@ -180,7 +181,7 @@ void ReadBench(YamlSection b, BenchOptions* bench) {
     r.kind = ReadWorldKind(row, "kind", kind);
     row.Read("agents", &r.agents, 1, 16);
     row.Read("planner", &r.planner);
-    if (!r.planner.empty() && !ParseGoalPlanner(r.planner)) row.Fail("planner", r.planner, "not a goal-directed planner (optimistic)");
+    if (!r.planner.empty() && !ParseGoalPlanner(r.planner)) row.Fail("planner", r.planner, "not a goal-directed planner (optimistic, oracle)");
     if (!r.planner.empty() && r.agents != 1) row.Fail("agents", std::to_string(r.agents), "navigation trials have one agent");
     row.Finish();
     bench->rows.push_back(r);
@@ -240,6 +241,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadSection(top.Section("planning"), &c.planning);
   ReadSection(top.Section("search"), &c.search);
   ReadSection(top.Section("navigation"), &c.navigation);
+  ReadSection(top.Section("lsp"), &c.lsp);
   ReadSection(top.Section("open_world"), &c.open_world);
   ReadSection(top.Section("picture"), &c.picture);
   ReadBench(top.Section("bench"), &c.bench);

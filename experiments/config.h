@@ -11,6 +11,7 @@
 #include "experiments/sensor_factory.h"
 #include "learning/train_options.h"
 #include "mapping/mapping.h"
+#include "planning/lsp_planner.h"
 #include "planning/navigation.h"
 #include "sim/motion.h"
 #include "sim/render.h"
@@ -31,7 +32,7 @@ struct DemoJob {
 struct BenchRow {
   core::WorldKind kind = core::WorldKind::kLabyrinth;
   int agents = 1;
-  std::string planner;  // "" (a search) or a goal-directed planner: "optimistic"
+  std::string planner;  // "" (a search) or a goal-directed planner: "optimistic", "oracle"
 };
 
 struct BenchOptions {
@@ -101,6 +102,7 @@ struct Config {
   planning::PlannerOptions planning;
   SearchOptions search;
   NavigationOptions navigation;
+  planning::LspOptions lsp;
   OpenWorldOptions open_world;
   DatagenOptions datagen;
   learning::TrainOptions train;

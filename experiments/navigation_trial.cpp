@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "experiments/agent_loop.h"
 #include "experiments/map_drive.h"
+#include "planning/lsp_planner.h"
 #include "planning/search_policy.h"
 
 namespace toponav::experiments {
@@ -24,6 +25,12 @@ bool Huddled(const std::deque<Vec2>& window, double span) {
   return true;
 }
 
+std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, const Config& config, GoalPlanner kind) {
+  if (kind == GoalPlanner::kOptimistic) return planning::CreatePlanner(planning::PlannerKind::kOptimistic);
+  return planning::CreateLspPlanner(planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance),
+                                    config.lsp, config.planning, world.bounds, ToString(kind));
+}
+
 // The view with the region's edges as walls: the region of interest (the maze's extent) is known, and a
 // long outer wall whose far end lies beyond the sensor's range never becomes a map wall, so the optimistic
 // graph would lead around its near end out of the world.
@@ -38,12 +45,12 @@ mapping::MapView WithRegionWalls(const mapping::MapView& view, const core::Aabb2
 // nearest frontier (exploring may show the cut to be a map error); stuck agents are nudged as in a search.
 class NavigationPolicy : public AgentPolicy {
  public:
-  NavigationPolicy(const core::World& world, const Config& config, planning::PlannerKind kind)
+  NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
       : goal_(world.goal),
         region_(world.bounds),
         options_(config.navigation),
         planning_(config.planning),
-        planner_(planning::CreatePlanner(kind)),
+        planner_(CreateGoalPlanner(world, config, kind)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length) {}
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
@@ -98,9 +105,11 @@ class NavigationPolicy : public AgentPolicy {
 
 }  // namespace
 
-std::optional<planning::PlannerKind> ParseGoalPlanner(const std::string& name) {
-  for (const auto kind : {planning::PlannerKind::kOptimistic})
-    if (name == planning::ToString(kind)) return kind;
+const char* ToString(GoalPlanner planner) { return planner == GoalPlanner::kOptimistic ? "optimistic" : "oracle"; }
+
+std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name) {
+  for (const auto p : {GoalPlanner::kOptimistic, GoalPlanner::kOracle})
+    if (name == ToString(p)) return p;
   return std::nullopt;
 }
 
@@ -116,7 +125,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   const LoopResult loop = RunAgentLoop(world, config, lo, policy, seed);
   NavigationResult r;
   r.seed = seed;
-  r.planner = planning::ToString(o.planner);
+  r.planner = ToString(o.planner);
   r.end_reason = policy.end_reason();
   r.reached = r.end_reason == "goal";
   r.steps = loop.steps;

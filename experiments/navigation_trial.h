@@ -16,11 +16,14 @@
 
 namespace toponav::experiments {
 
-// The goal-directed planners a trial (a bench row's `planner:`) may name: "optimistic"; nullopt otherwise.
-std::optional<planning::PlannerKind> ParseGoalPlanner(const std::string& name);
+// The goal-directed planners a trial (a bench row's `planner:`) may name: "optimistic" (the baseline: unknown
+// space is free), "oracle" (LSP with the true frontier properties: the bound a perfect network reaches).
+enum class GoalPlanner { kOptimistic, kOracle };
+const char* ToString(GoalPlanner planner);
+std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name);
 
 struct NavigationTrialOptions {
-  planning::PlannerKind planner = planning::PlannerKind::kOptimistic;
+  GoalPlanner planner = GoalPlanner::kOptimistic;
   int max_steps = 600;   // step cap (the reference's maze runs: 600 iterations)
   int mcmc_every = 5;    // MCMC cadence in steps (0: never)
   // Called after every step with the map the planner used and the path so far, and once more with the final

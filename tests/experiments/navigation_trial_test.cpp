@@ -4,6 +4,7 @@
 
 #include "core/geometry.h"
 #include "sim/worlds.h"
+#include "tests/testing/worlds.h"
 
 namespace toponav::experiments {
 namespace {
@@ -49,6 +50,41 @@ TEST(NavigationTrial, AnAgentThatCannotGetAwayIsStuck) {
   const NavigationResult r = RunNavigationTrial(w, cfg, {}, 7);
   EXPECT_EQ(r.end_reason, "stuck");
   EXPECT_EQ(r.steps, 4);
+}
+
+// A sensor without errors, and frontier rows below the maze's 14-wide openings (as configs/maze does).
+Config ExactMazeConfig() {
+  Config c;
+  c.sensor.noisy.miss_probability = 0;
+  c.sensor.noisy.false_positives_per_observation = 0;
+  c.sensor.noisy.label_confusion = 0;
+  c.sensor.noisy.label_softness = 0;
+  c.sensor.noisy.range_sigma = 0.01;
+  c.sensor.noisy.range_sigma_per_unit = 0;
+  c.sensor.noisy.bearing_sigma = 0.001;
+  c.sensor.noisy.reported_sigma_range = 2.0;
+  c.sensor.noisy.reported_sigma_bearing = 0.03;
+  c.planning.frontier_row_gap = 10.0;
+  return c;
+}
+
+TEST(NavigationTrial, TheOracleSkipsTheDeadEndTheOptimisticPlannerWalksInto) {
+  const core::World w = testing::DeadEndMaze();
+  const Config cfg = ExactMazeConfig();
+  NavigationTrialOptions o;
+  const NavigationResult optimistic = RunNavigationTrial(w, cfg, o, 1);
+  o.planner = GoalPlanner::kOracle;
+  const NavigationResult oracle = RunNavigationTrial(w, cfg, o, 1);
+  ASSERT_TRUE(optimistic.reached) << optimistic.end_reason;
+  ASSERT_TRUE(oracle.reached) << oracle.end_reason;
+  EXPECT_EQ(oracle.planner, "oracle");
+  EXPECT_LT(oracle.distance + 40.0, optimistic.distance) << "the dead end costs the optimistic planner a round trip";
+  double lowest = 1e9;
+  for (const auto& p : optimistic.path) lowest = std::min(lowest, p.x > 30 && p.x < 60 ? p.y : 1e9);
+  double oracle_low = 1e9;
+  for (const auto& p : oracle.path) oracle_low = std::min(oracle_low, p.x > 30 && p.x < 60 ? p.y : 1e9);
+  EXPECT_LT(lowest, 30.0) << "the optimistic agent went into the dead end";
+  EXPECT_GT(oracle_low, 55.0) << "the oracle's agent crossed x 30-60 only along the top corridor";
 }
 
 }  // namespace

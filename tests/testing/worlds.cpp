@@ -28,4 +28,14 @@ core::World RoomWorld(double wd, double h) {
   return w;
 }
 
+core::World DeadEndMaze() {
+  core::World w;
+  w.boundary = {{0, 0},    {50, 0},   {50, 40}, {36, 40}, {36, 14}, {14, 14},
+                {14, 60},  {120, 60}, {120, 0}, {134, 0}, {134, 74}, {0, 74}};
+  w.bounds = {{0, 0}, {134, 74}};
+  w.start = {7, 7, 0};
+  w.goal = {127, 7};
+  return w;
+}
+
 }  // namespace toponav::testing

@@ -1,0 +1,54 @@
+#pragma once
+// Learned Subgoal Planning (paper Sec. V; lsp.md §1): every step each frontier on offer gets its properties
+// (Ps, success and exploration cost) from an estimator, the distance tables come from a raster of the map
+// (planning/subgoal_grid.h), and the frontier that begins the order of least expected cost is the subgoal;
+// the agent heads for the goal through it (the other frontiers block its optimistic path, as the reference
+// masks them).  When the goal is in known space, or no frontier is worth ordering, it plans as the
+// optimistic planner does.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/option_fields.h"
+#include "core/world.h"
+#include "planning/planner.h"
+#include "planning/subgoal_ordering.h"
+
+namespace toponav::planning {
+
+class SubgoalGrid;
+
+// Where the properties come from: the oracle (the true world), or a network through the sensor.
+class SubgoalEstimator {
+ public:
+  virtual ~SubgoalEstimator() = default;
+  // One estimate per frontier of 'grid' (in its order); 'distances' are its tables.
+  virtual std::vector<SubgoalProperties> Estimate(const SubgoalGrid& grid, const OrderingProblem& distances) = 0;
+};
+
+// The true properties (TrueSubgoalProperties): what LSP reaches with a perfect network.
+std::unique_ptr<SubgoalEstimator> CreateOracleEstimator(const core::World& world, double cell, double clearance);
+
+// YAML section `lsp:`.
+struct LspOptions {
+  int max_frontiers = 12;     // frontiers ordered exactly; more are cut by SelectFrontiers (at most 16)
+  double cell = 1.0;          // raster cell, world units
+  double clearance = 1.0;     // the oracle's true free space keeps this far from walls
+  static const core::OptionFields<LspOptions>& Fields();  // YAML keys (under lsp:) and their ranges
+};
+
+// 'region': the area the world lies in (the raster's extent); 'planning': for the masked path's graph.
+std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> estimator, const LspOptions& options,
+                                          const PlannerOptions& planning, std::optional<core::Aabb2> region,
+                                          std::string name);
+
+// What the last Plan call decided, for pictures and tests: the frontier ids ordered, their (clamped)
+// properties, and the order chosen (indices into them).
+struct LspDecision {
+  std::vector<int> frontier_ids;
+  std::vector<SubgoalProperties> properties;
+  std::vector<int> order;
+};
+const LspDecision* LastDecision(const Planner& planner);  // nullptr for planners other than LSP
+
+}  // namespace toponav::planning

@@ -1,0 +1,130 @@
+#include "planning/subgoal_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+
+namespace toponav::planning {
+
+using core::Vec2;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double MinOver(const std::vector<double>& dist, const std::vector<int>& cells) {
+  double best = kInf;
+  for (int c : cells) best = std::min(best, dist[size_t(c)]);
+  return best;
+}
+
+core::Aabb2 ViewBox(const mapping::MapView& view, const Vec2& agent, const Vec2& goal) {
+  core::Aabb2 box{agent, agent};
+  box = core::Bounds(std::vector<Vec2>{goal}, box);
+  for (const auto& p : view.known_space) box = core::Bounds(p.outer, box);
+  return box;
+}
+
+}  // namespace
+
+SubgoalGrid::SubgoalGrid(const mapping::MapView& view, const std::vector<const mapping::Frontier*>& frontiers,
+                         const Vec2& agent, const Vec2& goal, double cell, const std::optional<core::Aabb2>& region,
+                         double margin) {
+  raster_ = region ? Raster::Covering(*region, cell, 2 * cell) : Raster::Covering(ViewBox(view, agent, goal), cell, margin);
+  known_ = FillPolygons(raster_, view.known_space);
+  unknown_open_.assign(raster_.size(), 0);
+  for (size_t i = 0; i < known_.size(); ++i) unknown_open_[i] = !known_[i];
+  // Map walls block (thick enough that no 8-connected step slips between two of their cells).
+  near_walls_.assign(raster_.size(), 0);
+  for (const auto& w : view.walls) {
+    for (int c : CellsNear(raster_, {w.pa, w.pb}, 0.75 * cell)) unknown_open_[size_t(c)] = 0;
+    for (int c : CellsNear(raster_, {w.pa, w.pb}, kWallShadow)) near_walls_[size_t(c)] = 1;
+  }
+  for (const mapping::Frontier* f : frontiers) {
+    std::vector<int> mine;
+    for (int c : CellsNear(raster_, f->points, 1.5 * cell))
+      if (unknown_open_[size_t(c)]) mine.push_back(c);
+    cells_.push_back(std::move(mine));
+  }
+  agent_ = raster_.CellOf(agent);
+  goal_ = raster_.CellOf(goal);
+}
+
+bool SubgoalGrid::goal_known() const { return goal_ >= 0 && known_[size_t(goal_)]; }
+
+OrderingProblem SubgoalGrid::Distances() const {
+  const size_t n = cells_.size();
+  OrderingProblem p;
+  p.properties.resize(n);
+  std::vector<char> through_known = known_;
+  for (const auto& cells : cells_)
+    for (int c : cells) through_known[size_t(c)] = 1;
+  if (agent_ >= 0) through_known[size_t(agent_)] = 1;
+  const std::vector<double> from_agent = CellDistances(raster_, through_known, {agent_});
+  std::vector<char> open = unknown_open_;
+  if (goal_ >= 0) open[size_t(goal_)] = 1;
+  const std::vector<double> from_goal = CellDistances(raster_, open, {goal_});
+  for (size_t f = 0; f < n; ++f) {
+    p.robot_cost.push_back(MinOver(from_agent, cells_[f]));
+    p.goal_cost.push_back(MinOver(from_goal, cells_[f]));
+  }
+  p.between.assign(n, std::vector<double>(n, 0.0));
+  for (size_t f = 0; f < n; ++f) {
+    const std::vector<double> from_f = CellDistances(raster_, through_known, cells_[f]);
+    for (size_t g = f + 1; g < n; ++g) p.between[f][g] = p.between[g][f] = MinOver(from_f, cells_[g]);
+  }
+  return p;
+}
+
+TrueFreeSpace::TrueFreeSpace(const core::World& world, double cell, double clearance) {
+  raster_ = Raster::Covering(world.bounds, cell, 2 * cell);
+  free_.assign(raster_.size(), 0);
+  for (int c = 0; c < int(raster_.size()); ++c)
+    free_[size_t(c)] = core::SignedDistance(world, raster_.Center(c), false) > clearance;
+}
+
+std::vector<char> TrueFreeSpace::On(const Raster& raster) const {
+  std::vector<char> out(raster.size(), 0);
+  for (int c = 0; c < int(raster.size()); ++c) {
+    const int mine = raster_.CellOf(raster.Center(c));
+    out[size_t(c)] = mine >= 0 && free_[size_t(mine)];
+  }
+  return out;
+}
+
+std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, const TrueFreeSpace& truth,
+                                                     const OrderingProblem& distances) {
+  const Raster& r = grid.raster();
+  const std::vector<char> free = truth.On(r);
+  std::vector<char> unseen(r.size(), 0);  // free in the true world, not known yet, not in a wall's shadow
+  for (size_t i = 0; i < unseen.size(); ++i) unseen[i] = free[i] && !grid.known()[i] && !grid.near_walls()[i];
+  const std::vector<double> to_goal = CellDistances(r, unseen, {grid.goal_cell()});
+  std::vector<char> free_or_agent = free;
+  if (grid.agent_cell() >= 0) free_or_agent[size_t(grid.agent_cell())] = 1;
+  const std::vector<double> from_agent = CellDistances(r, free_or_agent, {grid.agent_cell()});
+  std::vector<SubgoalProperties> out;
+  for (size_t f = 0; f < distances.properties.size(); ++f) {
+    std::vector<int> seeds;
+    for (int c : grid.cells(f))
+      if (unseen[size_t(c)]) seeds.push_back(c);
+    SubgoalProperties s{0.0, 0.0, 0.0};
+    const double through = MinOver(to_goal, seeds);
+    if (std::isfinite(through)) {
+      s.ps = 1.0;
+      s.delta_success = std::isfinite(distances.goal_cost[f]) ? std::max(0.0, through - distances.goal_cost[f]) : 0.0;
+    } else if (!seeds.empty()) {
+      // The unseen region behind the frontier: how deep the agent would walk in and back out.
+      const std::vector<double> region = CellDistances(r, unseen, seeds);
+      double lo = kInf, hi = -kInf;
+      for (size_t c = 0; c < region.size(); ++c)
+        if (std::isfinite(region[c]) && std::isfinite(from_agent[c])) lo = std::min(lo, from_agent[c]), hi = std::max(hi, from_agent[c]);
+      if (hi >= lo) s.exploration = 2 * (hi - lo);
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace toponav::planning

@@ -1,0 +1,76 @@
+#pragma once
+// The grid side of Learned Subgoal Planning (lsp.md §1.3, §2.1), on a raster of the map view: each
+// frontier's cells (the unknown cells along it), the three distance tables the expected cost needs, and the
+// frontiers' true properties (the labels, and the oracle's estimates) from the true world.
+//
+// Why a raster and not the polygons: the questions are geodesic distances through regions that are
+// differences of polygon sets (unknown space minus map walls; true free space minus known space) and the
+// farthest point of such a region, which a Dijkstra on cells answers directly; at 1 unit a cell a 14-wide
+// maze corridor is 14 cells, and a maze is ~20 000 cells (a few milliseconds a question).
+#include <optional>
+#include <vector>
+
+#include "core/world.h"
+#include "mapping/mapping.h"
+#include "planning/raster.h"
+#include "planning/subgoal_ordering.h"
+
+namespace toponav::planning {
+
+// The map view rasterized: known space, map walls, and the cells of the frontiers asked about.
+class SubgoalGrid {
+ public:
+  // 'region': the area the agent's world lies in (none: the view's extent, the agent and the goal, grown by
+  // 'margin').  'frontiers' are the ones asked about, in order.
+  SubgoalGrid(const mapping::MapView& view, const std::vector<const mapping::Frontier*>& frontiers,
+              const core::Vec2& agent, const core::Vec2& goal, double cell, const std::optional<core::Aabb2>& region,
+              double margin = 30.0);
+
+  const Raster& raster() const { return raster_; }
+  const std::vector<char>& known() const { return known_; }
+  const std::vector<int>& cells(size_t f) const { return cells_[f]; }  // frontier f's unknown cells
+  bool goal_known() const;  // the goal's cell is in known space
+
+  // d_robot (through known space and frontier cells), d_goal (the optimistic distance: through space that is
+  // not known, map walls blocking) and D between frontiers (through known space): the minimum over each
+  // frontier's cells; infinity where unreachable.
+  OrderingProblem Distances() const;
+
+  int agent_cell() const { return agent_; }
+  int goal_cell() const { return goal_; }
+  // Not known and not on a map wall (the optimistic planner's unknown space).
+  const std::vector<char>& unknown_open() const { return unknown_open_; }
+  // Within kWallShadow of a map wall: behind a mapped wall the true world's free space reaches a little past
+  // the map's (vertex estimates are off by a unit or so), and that strip must not join unseen regions.
+  const std::vector<char>& near_walls() const { return near_walls_; }
+  static constexpr double kWallShadow = 2.5;
+
+ private:
+  Raster raster_;
+  std::vector<char> known_, unknown_open_, near_walls_;
+  std::vector<std::vector<int>> cells_;
+  int agent_ = -1, goal_ = -1;
+};
+
+// The true world's free space on a raster (cells whose centres are at least 'clearance' from every wall and
+// clutter-free), computed once per world.
+class TrueFreeSpace {
+ public:
+  TrueFreeSpace(const core::World& world, double cell, double clearance);
+  // Free cells of 'raster' (which must share this raster's cell size and grid alignment).
+  std::vector<char> On(const Raster& raster) const;
+
+ private:
+  Raster raster_;
+  std::vector<char> free_;
+};
+
+// The true properties of each frontier of 'grid' (lsp.md §2.1): Ps = 1 when the goal can be reached through
+// the frontier's unseen-but-free side, with delta_success = (that true distance - the optimistic d_goal),
+// else Ps = 0 with exploration = 2 (farthest - nearest) robot distance over the unseen free region behind
+// it (a round trip to its deepest point).  A frontier with no unseen free space behind it, or whose region
+// the robot cannot reach, gets Ps = 0 and exploration 0 (nothing to find there).
+std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, const TrueFreeSpace& truth,
+                                                     const OrderingProblem& distances);
+
+}  // namespace toponav::planning

@@ -1,0 +1,95 @@
+#include "planning/subgoal_grid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "planning/raster.h"
+#include "tests/testing/worlds.h"
+
+namespace toponav::planning {
+namespace {
+
+using core::Vec2;
+
+TEST(Raster, FillsPolygonsMinusHolesByCellCentre) {
+  const Raster r = Raster::Covering({{0, 0}, {10, 10}}, 1.0);
+  core::Polygon square{testing::Rect(0, 0, 10, 10), {{{3, 3}, {3, 7}, {7, 7}, {7, 3}}}};
+  const std::vector<char> in = FillPolygons(r, {square});
+  int count = 0;
+  for (char c : in) count += c != 0;
+  EXPECT_EQ(count, 100 - 16);
+  EXPECT_TRUE(in[size_t(r.CellOf({0.5, 0.5}))]);
+  EXPECT_FALSE(in[size_t(r.CellOf({5, 5}))]) << "inside the hole";
+  EXPECT_EQ(r.CellOf({-0.1, 5}), -1);
+}
+
+TEST(Raster, DistancesGoAroundBlockedCellsWithoutCuttingCorners) {
+  const Raster r = Raster::Covering({{0, 0}, {10, 10}}, 1.0);
+  std::vector<char> open(r.size(), 1);
+  for (int y = 0; y < 9; ++y) open[size_t(r.Index(5, y))] = 0;  // a wall from the bottom up to y 9
+  const std::vector<double> d = CellDistances(r, open, {r.CellOf({0.5, 0.5})});
+  const double to_right = d[size_t(r.CellOf({9.5, 0.5}))];
+  EXPECT_GT(to_right, 16.0) << "around the wall's top, not through it";
+  EXPECT_LT(to_right, 24.0) << "octile steps, no corner cutting: a little over the Euclidean 20.1";
+  open[size_t(r.Index(5, 9))] = 0;
+  EXPECT_TRUE(std::isinf(CellDistances(r, open, {r.CellOf({0.5, 0.5})})[size_t(r.CellOf({9.5, 0.5}))]));
+  const std::vector<int> near = CellsNear(r, {{0, 5}, {10, 5}}, 0.5);
+  EXPECT_EQ(near.size(), 20u) << "the two rows of cells the line runs between";
+}
+
+// The dead-end maze seen from the start: the stem and the bottom corridor are known; frontiers at the top
+// of the stem (toward the goal) and where the bottom corridor turns up into the dead end.
+struct Seen {
+  mapping::MapView view;
+  std::vector<const mapping::Frontier*> frontiers;
+};
+
+Seen SeenFromStart() {
+  Seen s;
+  const Vec2 a{0, 0}, b{36, 0}, c{36, 14}, d{14, 14}, e{14, 60}, f{0, 60};
+  s.view.known_space.push_back({{a, b, c, d, e, f}, {}});
+  const std::vector<Vec2> corners{a, b, c, d, e, f};
+  for (size_t i = 0; i < corners.size(); ++i) s.view.vertices.push_back({int(i), corners[i], {}, 5});
+  for (auto [i, j] : {std::pair{0, 1}, {2, 3}, {3, 4}, {5, 0}})
+    s.view.walls.push_back({i, j, corners[size_t(i)], corners[size_t(j)], 0.9});
+  s.view.frontiers.push_back({1, {b, c}, (b + c) * 0.5, 14.0});
+  s.view.frontiers.push_back({2, {e, f}, (e + f) * 0.5, 14.0});
+  for (const auto& fr : s.view.frontiers) s.frontiers.push_back(&fr);
+  return s;
+}
+
+TEST(SubgoalGrid, DistancesRunThroughKnownSpaceToFrontiersAndThroughUnknownSpaceToTheGoal) {
+  const Seen s = SeenFromStart();
+  const core::World w = testing::DeadEndMaze();
+  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  EXPECT_FALSE(grid.goal_known());
+  const OrderingProblem d = grid.Distances();
+  EXPECT_NEAR(d.robot_cost[0], 29.0, 2.5);   // (7, 7) to x = 36
+  EXPECT_NEAR(d.robot_cost[1], 53.0, 2.5);   // (7, 7) to y = 60
+  EXPECT_NEAR(d.goal_cost[0], 91.0, 3.0);    // x = 36 straight to (127, 7) through unknown space
+  EXPECT_NEAR(d.goal_cost[1], 53 * std::sqrt(2.0) + 60, 4.0);  // octile distance from (14, 60) to (127, 7)
+  EXPECT_NEAR(d.between[0][1], d.between[1][0], 1e-9);
+  EXPECT_GT(d.between[0][1], 40.0);
+}
+
+TEST(SubgoalGrid, TrueLabelsMarkTheWayToTheGoalAndPriceTheDeadEnd) {
+  const Seen s = SeenFromStart();
+  const core::World w = testing::DeadEndMaze();
+  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  const OrderingProblem d = grid.Distances();
+  const std::vector<SubgoalProperties> p = TrueSubgoalProperties(grid, TrueFreeSpace(w, 1.0, 1.0), d);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_EQ(p[0].ps, 0.0) << "the bottom corridor ends in the dead end";
+  // In and out of the dead end: from x 36 to its far end near (43, 39) and back, about 2 x 40.
+  EXPECT_GT(p[0].exploration, 50.0);
+  EXPECT_LT(p[0].exploration, 110.0);
+  EXPECT_EQ(p[1].ps, 1.0) << "the stem leads to the goal";
+  // The true way (up, along the top, down the right branch) is longer than the straight optimistic one.
+  EXPECT_GT(p[1].delta_success, 30.0);
+  EXPECT_LT(p[1].delta_success, 90.0);
+  EXPECT_EQ(p[1].exploration, 0.0);
+}
+
+}  // namespace
+}  // namespace toponav::planning
