@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "experiments/agent_loop.h"
 #include "experiments/map_drive.h"
+#include "planning/given_up_frontiers.h"
 #include "planning/lsp_planner.h"
 #include "planning/search_policy.h"
 
@@ -41,8 +42,23 @@ mapping::MapView WithRegionWalls(const mapping::MapView& view, const core::Aabb2
   return v;
 }
 
+// The nearest frontier within 'reach' of p (-1: none).
+int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2& p, double reach) {
+  int best = -1;
+  double best_d = reach;
+  for (const auto& f : frontiers)
+    for (size_t i = 0; i + 1 < f.points.size(); ++i) {
+      const double d = core::DistanceToSegment(p, {f.points[i], f.points[i + 1]});
+      if (d < best_d) best_d = d, best = f.id;
+    }
+  return best;
+}
+
 // The goal-directed policy: the planner's way to the goal every step; where the map cuts the goal off, the
-// nearest frontier (exploring may show the cut to be a map error); stuck agents are nudged as in a search.
+// nearest frontier (exploring may show the cut to be a map error).  An agent that makes no headway is nudged
+// as in a search, and the frontier it stands at is blocked: a wall the map has not accepted yet (its vertices
+// seen edge-on or from too close) that the optimistic way runs through.  Blocked frontiers are walls to the
+// planners from then on (the same place under a new id too, planning::GivenUpFrontiers).
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -51,7 +67,9 @@ class NavigationPolicy : public AgentPolicy {
         options_(config.navigation),
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind)),
-        stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length) {}
+        stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
+        blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
+        block_reach_(config.search.give_up_distance) {}
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();
@@ -59,9 +77,15 @@ class NavigationPolicy : public AgentPolicy {
     window_.push_back(at);
     if (int(window_.size()) > options_.stuck_window) window_.pop_front();
     if (int(window_.size()) == options_.stuck_window && Huddled(window_, options_.stuck_span)) return End("stuck");
-    const mapping::MapView view = WithRegionWalls(*state.view, region_);
+    blocked_.Update(state.view->frontiers);
+    mapping::MapView view = WithRegionWalls(*state.view, region_);
+    for (const auto& f : state.view->frontiers)
+      if (blocked_.Contains(f.id))
+        for (size_t i = 1; i < f.points.size(); ++i) view.walls.push_back({-1, -1, f.points[i - 1], f.points[i], 1.0});
     const planning::VisibilityGraph graph(view, planning_, false);
-    const std::vector<planning::FrontierTarget> targets = planning::FrontierTargets(*state.view, planning_);
+    std::vector<planning::FrontierTarget> targets;
+    for (const auto& t : planning::FrontierTargets(*state.view, planning_))
+      if (!blocked_.Contains(t.frontier_id)) targets.push_back(t);
     const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
     choice_ = planner_->Plan(problem).at(0);
     if (choice_.status != planning::PlanStatus::kFound) choice_ = planning::ChooseNearestFrontier(graph, targets, at);
@@ -77,6 +101,9 @@ class NavigationPolicy : public AgentPolicy {
     const bool has_path = choice_.status == planning::PlanStatus::kFound && choice_.path.points.size() > 1;
     const bool stuck = stuck_.NoHeadway((*state.trails)[0], has_path, !has_path, step.pose.position(), step.distance);
     if (!stuck_.Record(agent, stuck)) return step;
+    const Vec2 at = step.pose.position();
+    const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
+    if (blocked >= 0) blocked_.GiveUp(blocked, state.view->frontiers, &at);
     const double angle = rng.Uniform(-core::kPi, core::kPi);
     ++nudges_;
     return motion.Nudge(agent, Vec2{std::cos(angle), std::sin(angle)} * state.step_length);
@@ -97,6 +124,8 @@ class NavigationPolicy : public AgentPolicy {
   planning::PlannerOptions planning_;
   std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
+  planning::GivenUpFrontiers blocked_;
+  double block_reach_;
   planning::FrontierChoice choice_;
   std::deque<Vec2> window_;
   int cut_off_ = 0, nudges_ = 0;

@@ -46,6 +46,7 @@ const core::OptionFields<MapperOptions>& MapperOptions::Fields() {
       {"min_detections", &O::min_detections, 1, 1000},
       {"wall_threshold", &O::wall_threshold, 0.01, 0.99},
       {"wall_skip_damping", &O::wall_skip_damping, 0.0, 1.0},
+      {"wall_min_view_angle", &O::wall_min_view_angle, 0.0, 1.0},
       {"wall_on_segment_tolerance", &O::wall_on_segment_tolerance, 0.0, 100.0},
       {"wall_past_detection_min", &O::wall_past_detection_min},
       {"wall_evidence_min", &O::wall_evidence_min},
@@ -173,6 +174,15 @@ double Mapper::SampleMostLikelyMap(core::Rng& rng, int samples) {
 double Mapper::LogPosterior() const {
   return internal::LogPosterior(impl_->core, impl_->core.walls.State(impl_->core.vertices));
 }
+double Mapper::LogPosteriorIf(const std::vector<std::pair<int, bool>>& inclusion) const {
+  internal::MapState ms = impl_->core.walls.State(impl_->core.vertices);
+  for (const auto& [id, on] : inclusion) {
+    TOPONAV_CHECK(id >= 0 && size_t(id) < impl_->core.vertices.size(), "no potential vertex " << id);
+    impl_->core.walls.SetMapped(id, on, &ms);
+  }
+  return internal::LogPosterior(impl_->core, ms);
+}
+
 const MapperOptions& Mapper::options() const { return impl_->core.o; }
 
 std::vector<MapVertex> Mapper::PotentialVertices() const {

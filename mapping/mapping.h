@@ -26,6 +26,10 @@ struct MapperOptions {
   int min_detections = 3;                 // a vertex needs this many detections to enter a map
   double wall_threshold = 0.5;            // a wall exists when its averaged likelihood exceeds this
   double wall_skip_damping = 0.2;         // evidence for detections k apart is scaled by this^(k-1)
+  // Two detections less than this apart in bearing (radians) give no wall evidence: seen edge-on, a wall
+  // between them and a doorway in it look the same, and which of their jambs falls between them in bearing
+  // order is noise.  0: every pair counts (the reference).
+  double wall_min_view_angle = 0.0;
   double wall_on_segment_tolerance = 2.0;  // ... not counting detections within this distance of the segment
                                           // between them whose vertex is not in the map (a false detection on
                                           // the wall); 0: count all (the reference)
@@ -125,6 +129,9 @@ class Mapper {
 
   // The log posterior of the current map (all observations).
   double LogPosterior() const;
+  // ... with the listed potential vertices in or out of the map as given (diagnostics and tests: which map
+  // the posterior prefers; the map itself is not changed).
+  double LogPosteriorIf(const std::vector<std::pair<int, bool>>& inclusion) const;
 
   // The map of the last MCMC call (or the live one without defer_to_mcmc) with its known space and frontiers,
   // brought up to date incrementally (not const: known space and frontier ids advance with each call, so

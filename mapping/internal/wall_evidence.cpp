@@ -31,7 +31,7 @@ void WallEvidence::Add(const Obs& ob, size_t num_vertices) {
       const size_t j = (i + s) % n;
       if (Wrap2Pi(ob.det[j].bearing - ob.det[i].bearing) >= core::kPi) break;
       const int a = ob.vid[i], b = ob.vid[j];
-      if (a == b) continue;
+      if (a == b || Wrap2Pi(ob.det[j].bearing - ob.det[i].bearing) < o_.wall_min_view_angle) continue;
       int fixed = 0;
       CondSample c;
       for (size_t t = 1; t < s; ++t) {
