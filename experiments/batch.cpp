@@ -100,7 +100,7 @@ using StepHook = std::function<void(const mapping::MapView&, const std::vector<s
 // Runs the trial 'id' names (a search, or goal-directed navigation with its planner): its record, and the final
 // map and paths for the picture.
 json RunTrial(const Config& config, const TrialId& id, const core::World& w, const StepHook& on_step,
-              mapping::MapView* view, std::vector<std::vector<core::Vec2>>* paths) {
+              mapping::MapView* view, std::vector<std::vector<core::Vec2>>* paths, MapPictureExtras* extras) {
   if (id.planner.empty()) {
     TrialOptions t;
     t.num_agents = id.agents;
@@ -121,6 +121,7 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
   n.on_step = on_step;
   const NavigationResult r = RunNavigationTrial(w, config, n, id.seed, view);
   *paths = {r.path};
+  *extras = {w.goal, r.frontier_ps};
   return NavigationJson(id, r);
 }
 
@@ -143,11 +144,12 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
     }
     mapping::MapView view;
     std::vector<std::vector<core::Vec2>> paths;
-    line = RunTrial(config, id, w, on_step, &view, &paths).dump();
+    MapPictureExtras extras;
+    line = RunTrial(config, id, w, on_step, &view, &paths, &extras).dump();
     if (config.bench.pictures) {
       const fs::path dir = fs::path(o.out_dir) / "pictures";
       fs::create_directories(dir);
-      DrawMapPicture(w, view, paths, config.picture, (dir / (name + ".png")).string());
+      DrawMapPicture(w, view, paths, config.picture, (dir / (name + ".png")).string(), extras);
     }
   } catch (const std::exception& e) {
     line = RecordJson(id, e.what()).dump();

@@ -169,7 +169,7 @@ void DrawWorldPicture(const core::World& world, const PictureOptions& options, c
 }
 
 void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
-              const std::vector<std::vector<core::Vec2>>& agent_paths) {
+              const std::vector<std::vector<core::Vec2>>& agent_paths, const MapPictureExtras& extras = {}) {
   c.image.setTo(cv::Scalar(200, 200, 200));  // unknown
   for (const auto& poly : map.known_space) {
     std::vector<std::vector<cv::Point>> rings{c.Px(poly.outer)};
@@ -183,26 +183,34 @@ void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
     if (pts.size() > 1)
       cv::polylines(c.image, std::vector<std::vector<cv::Point>>{pts}, false, kAgentColours[a % 3], 1, cv::LINE_AA);
   }
-  for (const auto& f : map.frontiers)  // dashed
+  for (const auto& f : map.frontiers) {  // dashed
+    const auto ps = extras.frontier_ps.find(f.id);
+    const double p = ps == extras.frontier_ps.end() ? -1.0 : std::clamp(ps->second, 0.0, 1.0);
+    const cv::Scalar colour = p < 0 ? cv::Scalar(200, 0, 200) : cv::Scalar(0, 190 * p, 220 * (1 - p));
     for (size_t i = 1; i < f.points.size(); ++i) {
       const core::Vec2 a = f.points[i - 1], b = f.points[i];
       const double len = core::Distance(a, b);
       for (double t = 0; t < len; t += 3.0)
-        cv::line(c.image, c.Px(a + (b - a) * (t / len)), c.Px(a + (b - a) * (std::min(t + 1.8, len) / len)),
-                 cv::Scalar(200, 0, 200), 2, cv::LINE_AA);
+        cv::line(c.image, c.Px(a + (b - a) * (t / len)), c.Px(a + (b - a) * (std::min(t + 1.8, len) / len)), colour,
+                 p < 0 ? 2 : 3, cv::LINE_AA);
     }
+  }
   for (const auto& w : map.walls) cv::line(c.image, c.Px(w.pa), c.Px(w.pb), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
   for (const auto& v : map.vertices) cv::circle(c.image, c.Px(v.position), 3, cv::Scalar(0, 0, 0), cv::FILLED, cv::LINE_AA);
   for (const auto& v : map.rejected) cv::circle(c.image, c.Px(v.position), 4, cv::Scalar(0, 0, 230), 2, cv::LINE_AA);
   for (size_t a = 0; a < agent_paths.size(); ++a)
     if (!agent_paths[a].empty()) cv::circle(c.image, c.Px(agent_paths[a].back()), c.Len(1.0) + 2, kAgentColours[a % 3], cv::FILLED, cv::LINE_AA);
+  if (extras.goal) {
+    cv::circle(c.image, c.Px(*extras.goal), c.Len(2.5), kGoal, cv::FILLED, cv::LINE_AA);
+    cv::circle(c.image, c.Px(*extras.goal), c.Len(2.5), kWall, 1, cv::LINE_AA);
+  }
 }
 
 void DrawMapPicture(const core::World& world, const mapping::MapView& map,
                     const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
-                    const std::string& png_path) {
+                    const std::string& png_path, const MapPictureExtras& extras) {
   Canvas c(world, options);
-  PaintMap(c, world, map, agent_paths);
+  PaintMap(c, world, map, agent_paths, extras);
   c.Save(png_path);
 }
 

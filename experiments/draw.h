@@ -1,6 +1,8 @@
 #pragma once
 // Top-down pictures (PNG).  North is up; one world unit is PictureOptions::pixels_per_unit pixels.
 #include <memory>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,11 +26,18 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
                             const PictureOptions& options, const std::string& png_path,
                             const std::vector<core::Detection>& detections = {});
 
-// A map over the true world: true walls faint, known space shaded, frontiers dashed (magenta), map walls and
-// vertices black, rejected vertices red, the agents' paths in their own colours.
+// What a navigation picture adds: the goal, and each frontier's estimated Ps (frontier id -> [0, 1]).
+struct MapPictureExtras {
+  std::optional<core::Vec2> goal;
+  std::map<int, double> frontier_ps;
+};
+
+// A map over the true world: true walls faint, known space shaded, frontiers dashed (magenta; with an
+// estimated Ps from red at 0 to green at 1), map walls and vertices black, rejected vertices red, the agents'
+// paths in their own colours, the goal (if given) a red disc.
 void DrawMapPicture(const core::World& world, const mapping::MapView& map,
                     const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
-                    const std::string& png_path);
+                    const std::string& png_path, const MapPictureExtras& extras = {});
 
 // A video of a trial, one DrawMapPicture-style frame (plus each agent's position) per AddFrame: MP4 ('.mp4',
 // MPEG-4 part 2) or Motion-JPEG AVI ('.avi').  Throws core::DataError naming the file if it cannot be opened.

@@ -112,14 +112,16 @@ int RunNavigationCommand(const TrialArgs& a) {
   n.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
   n.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
   int step = 0;
+  experiments::MapPictureExtras extras{w.goal, {}};
+  n.on_estimates = [&](const std::map<int, double>& ps) { extras.frontier_ps = ps; };
   if (a.frames_every > 0)
     n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
       if (step++ % a.frames_every == 0)
-        experiments::DrawMapPicture(w, v, paths, cfg.picture, (fs::path(a.out) / fmt::format("frame_{:04d}.png", step - 1)).string());
+        experiments::DrawMapPicture(w, v, paths, cfg.picture, (fs::path(a.out) / fmt::format("frame_{:04d}.png", step - 1)).string(), extras);
     };
   mapping::MapView view;
   const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
-  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string());
+  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string(), {w.goal, r.frontier_ps});
   fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, {:.1f} s -> {}\n", seed,
              r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
   return 0;

@@ -88,6 +88,10 @@ class NavigationPolicy : public AgentPolicy {
       if (!blocked_.Contains(t.frontier_id)) targets.push_back(t);
     const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
     choice_ = planner_->Plan(problem).at(0);
+    estimates_.clear();
+    if (const planning::LspDecision* d = planning::LastDecision(*planner_))
+      for (size_t i = 0; i < d->frontier_ids.size(); ++i) estimates_[d->frontier_ids[i]] = d->properties[i].ps;
+    if (on_estimates) on_estimates(estimates_);
     if (choice_.status != planning::PlanStatus::kFound) choice_ = planning::ChooseNearestFrontier(graph, targets, at);
     cut_off_ = choice_.status == planning::PlanStatus::kFound ? 0 : cut_off_ + 1;
     if (cut_off_ >= options_.cut_off_steps) return End("cut_off");
@@ -109,6 +113,8 @@ class NavigationPolicy : public AgentPolicy {
     return motion.Nudge(agent, Vec2{std::cos(angle), std::sin(angle)} * state.step_length);
   }
 
+  std::function<void(const std::map<int, double>&)> on_estimates;
+  const std::map<int, double>& estimates() const { return estimates_; }
   const std::string& end_reason() const { return end_reason_; }
   int nudges() const { return nudges_; }
 
@@ -128,6 +134,7 @@ class NavigationPolicy : public AgentPolicy {
   double block_reach_;
   planning::FrontierChoice choice_;
   std::deque<Vec2> window_;
+  std::map<int, double> estimates_;
   int cut_off_ = 0, nudges_ = 0;
   std::string end_reason_ = "step_cap";
 };
@@ -146,6 +153,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
                                     uint64_t seed, mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();
   NavigationPolicy policy(world, config, o.planner);
+  policy.on_estimates = o.on_estimates;
   LoopOptions lo;
   lo.max_steps = o.max_steps;
   lo.mcmc_every = o.mcmc_every;
@@ -161,6 +169,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   r.distance = loop.distance.at(0);
   r.nudges = policy.nudges();
   r.path = loop.paths.at(0);
+  r.frontier_ps = policy.estimates();
   r.iou = KnownSpaceIoU(world, loop.final_view);
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (final_view) *final_view = loop.final_view;

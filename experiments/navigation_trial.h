@@ -6,6 +6,7 @@
 // the distance travelled.  A trial is a pure function of (world, config, planner, seed).
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ struct NavigationTrialOptions {
   // Called after every step with the map the planner used and the path so far, and once more with the final
   // map (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
+  // Called every step (before the agent moves) with the frontiers a learned-subgoal planner ordered and their
+  // estimated Ps (frontier id -> Ps; empty for the optimistic planner, or when it planned optimistically).
+  std::function<void(const std::map<int, double>&)> on_estimates;
 };
 
 struct NavigationResult {
@@ -42,6 +46,7 @@ struct NavigationResult {
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;
   std::vector<core::Vec2> path;
+  std::map<int, double> frontier_ps;  // the last step's estimates (NavigationTrialOptions::on_estimates)
 };
 
 NavigationResult RunNavigationTrial(const core::World& world, const Config& config,

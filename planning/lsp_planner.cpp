@@ -88,12 +88,12 @@ class LspPlanner : public Planner {
     for (size_t f = 0; f < frontiers.size(); ++f) problem.properties[f] = Clamped(estimates[f]);
     const std::vector<int> chosen = SelectFrontiers(problem, o_.max_frontiers);
     const Ordering best = BestOrdering(Restrict(problem, chosen));
-    for (int i : chosen) {
-      decision_.frontier_ids.push_back(frontiers[size_t(i)]->id);
-      decision_.properties.push_back(problem.properties[size_t(i)]);
+    for (size_t f = 0; f < frontiers.size(); ++f) {
+      decision_.frontier_ids.push_back(frontiers[f]->id);
+      decision_.properties.push_back(problem.properties[f]);
     }
-    decision_.order = best.order;
-    return best.order.empty() ? -1 : decision_.frontier_ids[size_t(best.order.front())];
+    for (int k : best.order) decision_.order.push_back(chosen[size_t(k)]);
+    return decision_.order.empty() ? -1 : decision_.frontier_ids[size_t(decision_.order.front())];
   }
 
   std::unique_ptr<SubgoalEstimator> estimator_;

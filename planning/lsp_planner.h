@@ -42,8 +42,8 @@ std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> esti
                                           const PlannerOptions& planning, std::optional<core::Aabb2> region,
                                           std::string name);
 
-// What the last Plan call decided, for pictures and tests: the frontier ids ordered, their (clamped)
-// properties, and the order chosen (indices into them).
+// What the last Plan call decided, for pictures and tests: every frontier estimated, its (clamped)
+// properties, and the order chosen over the ones worth ordering (indices into them, the subgoal first).
 struct LspDecision {
   std::vector<int> frontier_ids;
   std::vector<SubgoalProperties> properties;

@@ -64,7 +64,9 @@ TEST(LspPlanner, TheOracleHeadsUpTheStemNotIntoTheDeadEndTheOptimisticPlannerTak
   EXPECT_EQ(oracle[0].frontier_id, 2);
   const LspDecision* d = LastDecision(*planner);
   ASSERT_NE(d, nullptr);
-  EXPECT_EQ(d->frontier_ids, (std::vector<int>{2})) << "the dead end (Ps 0) is not worth ordering";
+  EXPECT_EQ(d->frontier_ids, (std::vector<int>{1, 2}));
+  EXPECT_EQ(d->properties[0].ps, 0.0);
+  EXPECT_EQ(d->order, (std::vector<int>{1})) << "the dead end (Ps 0) is not worth ordering";
   // The optimistic planner's straight way to the goal goes into the bottom corridor.
   const VisibilityGraph graph(s.view, s.options, false);
   const PlanningProblem p{&s.view, &graph, &s.targets, {s.world.start.position()}, s.world.goal};
@@ -80,7 +82,9 @@ TEST(LspPlanner, EstimatesOutsideTheirRangesAreClampedBeforeOrdering) {
   PlanWith(s, std::make_unique<FixedEstimator>(std::vector<SubgoalProperties>{{1.8, -20, -5}, {-0.3, 10, 10}}), &planner);
   const LspDecision* d = LastDecision(*planner);
   ASSERT_NE(d, nullptr);
-  ASSERT_EQ(d->frontier_ids, (std::vector<int>{1})) << "Ps below 0 becomes 0: not worth ordering";
+  ASSERT_EQ(d->frontier_ids, (std::vector<int>{1, 2}));
+  EXPECT_EQ(d->order, (std::vector<int>{0})) << "Ps below 0 becomes 0: not worth ordering";
+  EXPECT_EQ(d->properties[1].ps, 0.0);
   EXPECT_EQ(d->properties[0].ps, 1.0);
   EXPECT_EQ(d->properties[0].delta_success, 0.0);
   EXPECT_EQ(d->properties[0].exploration, 0.0);
