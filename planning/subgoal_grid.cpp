@@ -127,4 +127,28 @@ std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, co
   return out;
 }
 
+SubgoalLabelGrid RasterizeSubgoalLabels(const SubgoalGrid& grid, const std::vector<SubgoalProperties>& properties,
+                                        const core::Pose2& pose, const core::RangeBearingGrid& rb,
+                                        const std::function<bool(const Vec2&)>& visible) {
+  SubgoalLabelGrid out;
+  out.grid = rb;
+  out.mask.assign(rb.size(), 0);
+  out.ps.assign(rb.size(), 0.0f);
+  out.delta_success.assign(rb.size(), 0.0f);
+  out.exploration.assign(rb.size(), 0.0f);
+  for (size_t f = 0; f < properties.size(); ++f)
+    for (int c : grid.cells(f)) {
+      const Vec2 p = grid.raster().Center(c);
+      const double range = core::Distance(p, pose.position());
+      if (range >= rb.max_range || !visible(p)) continue;
+      const double bearing = core::WrapAngle(std::atan2(p.y - pose.y, p.x - pose.x) - pose.yaw);
+      const size_t i = rb.Index(rb.RangeRow(range), rb.BearingCol(bearing));
+      out.mask[i] = 1;
+      out.ps[i] = float(properties[f].ps);
+      out.delta_success[i] = float(properties[f].delta_success);
+      out.exploration[i] = float(properties[f].exploration);
+    }
+  return out;
+}
+
 }  // namespace toponav::planning

@@ -7,9 +7,12 @@
 // differences of polygon sets (unknown space minus map walls; true free space minus known space) and the
 // farthest point of such a region, which a Dijkstra on cells answers directly; at 1 unit a cell a 14-wide
 // maze corridor is 14 cells, and a maze is ~20 000 cells (a few milliseconds a question).
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
+#include "core/range_bearing_grid.h"
 #include "core/world.h"
 #include "mapping/mapping.h"
 #include "planning/raster.h"
@@ -72,5 +75,17 @@ class TrueFreeSpace {
 // the robot cannot reach, gets Ps = 0 and exploration 0 (nothing to find there).
 std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, const TrueFreeSpace& truth,
                                                      const OrderingProblem& distances);
+
+// Frontier properties on the sensor's range-bearing grid (lsp.md §2.6): the labels the subgoal network
+// learns.  Each cell of each frontier within range that 'visible' accepts (a world point: seen from the pose)
+// marks its grid cell with the frontier's properties; a later frontier overwrites an earlier one.
+struct SubgoalLabelGrid {
+  core::RangeBearingGrid grid;
+  std::vector<uint8_t> mask;                         // 1: a frontier cell
+  std::vector<float> ps, delta_success, exploration; // its frontier's properties (0 elsewhere)
+};
+SubgoalLabelGrid RasterizeSubgoalLabels(const SubgoalGrid& grid, const std::vector<SubgoalProperties>& properties,
+                                        const core::Pose2& pose, const core::RangeBearingGrid& rb,
+                                        const std::function<bool(const core::Vec2&)>& visible);
 
 }  // namespace toponav::planning

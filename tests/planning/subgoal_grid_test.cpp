@@ -91,5 +91,33 @@ TEST(SubgoalGrid, TrueLabelsMarkTheWayToTheGoalAndPriceTheDeadEnd) {
   EXPECT_EQ(p[1].exploration, 0.0);
 }
 
+TEST(SubgoalGrid, LabelsLandInTheRangeBearingCellsOfTheFrontiersTheAgentSees) {
+  const Seen s = SeenFromStart();
+  const core::World w = testing::DeadEndMaze();
+  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  const std::vector<SubgoalProperties> p{{0.0, 0.0, 80.0}, {1.0, 40.0, 0.0}};
+  const core::Pose2 pose{7, 7, core::kPi / 2};  // facing up the stem: the stem's top lies straight ahead
+  const core::RangeBearingGrid rb;
+  const SubgoalLabelGrid all = RasterizeSubgoalLabels(grid, p, pose, rb, [](const Vec2&) { return true; });
+  // The stem's top (y 60-61.5, about 54 ahead): Ps 1 around bearing 0 (column 64), row of range ~54.
+  const size_t ahead = rb.Index(rb.RangeRow(54.5), rb.BearingCol(0.0));
+  EXPECT_EQ(all.mask[ahead], 1);
+  EXPECT_FLOAT_EQ(all.ps[ahead], 1.0f);
+  EXPECT_FLOAT_EQ(all.delta_success[ahead], 40.0f);
+  // The dead end's frontier (x 36-37.5, y 0-14) lies to the agent's right, about 30 away: Ps 0, exploration 80.
+  const double bearing = core::WrapAngle(std::atan2(7.0 - 7.0, 36.5 - 7.0) - pose.yaw);
+  const size_t right = rb.Index(rb.RangeRow(29.5), rb.BearingCol(bearing));
+  EXPECT_EQ(all.mask[right], 1);
+  EXPECT_FLOAT_EQ(all.ps[right], 0.0f);
+  EXPECT_FLOAT_EQ(all.exploration[right], 80.0f);
+  int marked = 0;
+  for (uint8_t m : all.mask) marked += m;
+  EXPECT_GT(marked, 10);
+  // Cells the agent does not see are left out.
+  const SubgoalLabelGrid seen = RasterizeSubgoalLabels(grid, p, pose, rb, [](const Vec2& q) { return q.y > 30; });
+  EXPECT_EQ(seen.mask[ahead], 1);
+  EXPECT_EQ(seen.mask[right], 0);
+}
+
 }  // namespace
 }  // namespace toponav::planning
