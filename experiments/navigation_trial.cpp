@@ -86,6 +86,7 @@ class NavigationPolicy : public AgentPolicy {
     std::vector<planning::FrontierTarget> targets;
     for (const auto& t : planning::FrontierTargets(*state.view, planning_))
       if (!blocked_.Contains(t.frontier_id)) targets.push_back(t);
+    if (on_plan) on_plan(state, targets);
     const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
     choice_ = planner_->Plan(problem).at(0);
     estimates_.clear();
@@ -114,6 +115,7 @@ class NavigationPolicy : public AgentPolicy {
   }
 
   std::function<void(const std::map<int, double>&)> on_estimates;
+  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
   const std::map<int, double>& estimates() const { return estimates_; }
   const std::string& end_reason() const { return end_reason_; }
   int nudges() const { return nudges_; }
@@ -154,6 +156,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   const auto t0 = std::chrono::steady_clock::now();
   NavigationPolicy policy(world, config, o.planner);
   policy.on_estimates = o.on_estimates;
+  policy.on_plan = o.on_plan;
   LoopOptions lo;
   lo.max_steps = o.max_steps;
   lo.mcmc_every = o.mcmc_every;

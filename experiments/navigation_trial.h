@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/world.h"
+#include "experiments/agent_loop.h"
 #include "experiments/config.h"
 #include "planning/planner.h"
 
@@ -30,6 +31,9 @@ struct NavigationTrialOptions {
   // Called after every step with the map the planner used and the path so far, and once more with the final
   // map (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
+  // Called every step before the planner with the loop's state and the frontier targets on offer (training
+  // data: the frontiers to label).
+  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
   // Called every step (before the agent moves) with the frontiers a learned-subgoal planner ordered and their
   // estimated Ps (frontier id -> Ps; empty for the optimistic planner, or when it planned optimistically).
   std::function<void(const std::map<int, double>&)> on_estimates;

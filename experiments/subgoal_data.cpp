@@ -1,0 +1,49 @@
+#include "experiments/subgoal_data.h"
+
+#include "core/error.h"
+#include "experiments/navigation_trial.h"
+#include "sim/raycast.h"
+
+namespace toponav::experiments {
+
+namespace {
+
+constexpr double kSeenMargin = 1.8;  // a frontier cell this close to what the pose sees counts as seen
+
+}  // namespace
+
+std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& maze, const Config& config, uint64_t seed,
+                                                 int every, const core::RangeBearingGrid& grid) {
+  TOPONAV_CHECK(every >= 1, "every " << every);
+  const sim::RayCaster rays(maze);
+  const planning::TrueFreeSpace truth(maze, config.lsp.cell, config.lsp.clearance);
+  std::vector<SubgoalSample> out;
+  NavigationTrialOptions o;
+  o.max_steps = config.bench.max_steps;
+  o.mcmc_every = config.bench.mcmc_every;
+  o.on_plan = [&](const LoopState& state, const std::vector<planning::FrontierTarget>& targets) {
+    if (state.step % every != 0 || targets.empty()) return;
+    std::vector<const mapping::Frontier*> frontiers;
+    for (const auto& t : targets)
+      for (const auto& f : state.view->frontiers)
+        if (f.id == t.frontier_id) frontiers.push_back(&f);
+    const core::Pose2 pose = state.poses[0];
+    const planning::SubgoalGrid sg(*state.view, frontiers, pose.position(), maze.goal, config.lsp.cell, maze.bounds);
+    if (sg.goal_known()) return;
+    const std::vector<planning::SubgoalProperties> p = planning::TrueSubgoalProperties(sg, truth, sg.Distances());
+    const core::Ring seen = rays.VisibilityPolygon(pose.position());
+    const auto visible = [&](const core::Vec2& q) { return core::Contains(seen, q) || core::NearRing(q, seen, kSeenMargin); };
+    SubgoalSample s{maze.seed, state.step, pose, maze.goal, 0, planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
+    for (size_t f = 0; f < frontiers.size(); ++f)
+      for (int c : sg.cells(f))
+        if (visible(sg.raster().Center(c))) {
+          ++s.frontiers;
+          break;
+        }
+    if (s.frontiers > 0) out.push_back(std::move(s));
+  };
+  RunNavigationTrial(maze, config, o, seed);
+  return out;
+}
+
+}  // namespace toponav::experiments
