@@ -9,6 +9,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "core/error.h"
+#include "experiments/internal/picture_io.h"
 
 namespace toponav::experiments {
 
@@ -16,15 +17,7 @@ using core::Vec2;
 
 namespace {
 
-void Save(const cv::Mat& image, const std::string& path) {
-  bool ok = false;
-  try {
-    ok = cv::imwrite(path, image);
-  } catch (const cv::Exception& e) {
-    throw core::DataError(path, std::string("cannot write the picture: ") + e.what());
-  }
-  if (!ok) throw core::DataError(path, "cannot write the picture");
-}
+void Save(const cv::Mat& image, const std::string& path) { internal::SavePicture(image, path); }
 
 // World -> pixel mapping with a margin; colours are BGR.
 class Canvas {

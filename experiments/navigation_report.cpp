@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <limits>
 #include <map>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "core/error.h"
+#include "experiments/internal/picture_io.h"
 
 namespace toponav::experiments {
 
@@ -147,13 +147,7 @@ void WriteCostScatter(const std::vector<TrialRecord>& records, const std::string
   if (panels.empty()) return;
   cv::Mat img(420, 420 * int(panels.size()), CV_8UC3, cv::Scalar(255, 255, 255));
   for (size_t i = 0; i < panels.size(); ++i) DrawPanel(img, 420 * int(i), panels[i].first, panels[i].second, 1.05 * max_cost);
-  bool ok = false;
-  try {
-    ok = cv::imwrite(png_path, img);
-  } catch (const cv::Exception& e) {
-    throw core::DataError(png_path, std::string("cannot write the picture: ") + e.what());
-  }
-  if (!ok) throw core::DataError(png_path, "cannot write the picture");
+  internal::SavePicture(img, png_path);
 }
 
 }  // namespace toponav::experiments
