@@ -33,9 +33,10 @@ struct Detection {
   LabelProbs labels{0.25, 0.25, 0.25, 0.25};
 };
 
-// Per-cell outputs a network returns beside the vertices, on its range-bearing grid: cell (r, b) covers
-// ranges [r, r+1) * max_range / rows and bearing ColumnToBearing(b, cols); values are row-major with the
-// channels innermost (index (r * cols + b) * channels + c).  Empty for sensors without such outputs.
+// Per-cell outputs a network returns beside the vertices, on its range-bearing grid (the convention of
+// core::RangeBearingGrid: row r holds the ranges nearest (r + 1) * max_range / rows, column b looks along
+// ColumnToBearing(b, cols)); values are row-major with the channels innermost (index (r * cols + b) *
+// channels + c).  Empty for sensors without such outputs.
 struct CellGrid {
   int rows = 0, cols = 0;
   double max_range = 0.0;

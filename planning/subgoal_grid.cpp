@@ -38,8 +38,9 @@ SubgoalGrid::SubgoalGrid(const mapping::MapView& view, const std::vector<const m
   for (size_t i = 0; i < known_.size(); ++i) unknown_open_[i] = !known_[i];
   // Map walls block (thick enough that no 8-connected step slips between two of their cells).
   near_walls_.assign(raster_.size(), 0);
+  on_walls_.assign(raster_.size(), 0);
   for (const auto& w : view.walls) {
-    for (int c : CellsNear(raster_, {w.pa, w.pb}, 0.75 * cell)) unknown_open_[size_t(c)] = 0;
+    for (int c : CellsNear(raster_, {w.pa, w.pb}, 0.75 * cell)) unknown_open_[size_t(c)] = 0, on_walls_[size_t(c)] = 1;
     for (int c : CellsNear(raster_, {w.pa, w.pb}, kWallShadow)) near_walls_[size_t(c)] = 1;
   }
   for (const mapping::Frontier* f : frontiers) {
@@ -50,6 +51,17 @@ SubgoalGrid::SubgoalGrid(const mapping::MapView& view, const std::vector<const m
   }
   agent_ = raster_.CellOf(agent);
   goal_ = raster_.CellOf(goal);
+}
+
+bool SubgoalGrid::SightClear(const Vec2& a, const Vec2& b) const {
+  const double length = core::Distance(a, b);
+  const int steps = std::max(1, int(std::ceil(length / (0.5 * raster_.cell))));
+  const int from = raster_.CellOf(a), to = raster_.CellOf(b);
+  for (int k = 1; k < steps; ++k) {
+    const int c = raster_.CellOf(a + (b - a) * (double(k) / steps));
+    if (c >= 0 && c != from && c != to && on_walls_[size_t(c)]) return false;
+  }
+  return true;
 }
 
 bool SubgoalGrid::goal_known() const { return goal_ >= 0 && known_[size_t(goal_)]; }

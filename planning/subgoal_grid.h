@@ -47,10 +47,12 @@ class SubgoalGrid {
   // the map's (vertex estimates are off by a unit or so), and that strip must not join unseen regions.
   const std::vector<char>& near_walls() const { return near_walls_; }
   static constexpr double kWallShadow = 2.5;
+  // No map wall crosses the segment a-b (sampled every half cell on the raster's wall cells).
+  bool SightClear(const core::Vec2& a, const core::Vec2& b) const;
 
  private:
   Raster raster_;
-  std::vector<char> known_, unknown_open_, near_walls_;
+  std::vector<char> known_, unknown_open_, near_walls_, on_walls_;
   std::vector<std::vector<int>> cells_;
   int agent_ = -1, goal_ = -1;
 };

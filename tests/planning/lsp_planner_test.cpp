@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "planning/subgoal_grid.h"
+#include "tests/planning/dead_end_view.h"
 #include "tests/testing/worlds.h"
 
 namespace toponav::planning {
@@ -20,19 +21,6 @@ class FixedEstimator : public SubgoalEstimator {
   std::vector<SubgoalProperties> p_;
 };
 
-// The dead-end maze seen from its start (as in subgoal_grid_test): frontier 1 into the dead end, 2 up the stem.
-mapping::MapView SeenFromStart() {
-  mapping::MapView v;
-  const Vec2 a{0, 0}, b{36, 0}, c{36, 14}, d{14, 14}, e{14, 60}, f{0, 60};
-  v.known_space.push_back({{a, b, c, d, e, f}, {}});
-  const std::vector<Vec2> corners{a, b, c, d, e, f};
-  for (size_t i = 0; i < corners.size(); ++i) v.vertices.push_back({int(i), corners[i], {}, 5});
-  for (auto [i, j] : {std::pair{0, 1}, {2, 3}, {3, 4}, {5, 0}}) v.walls.push_back({i, j, corners[size_t(i)], corners[size_t(j)], 0.9});
-  v.frontiers.push_back({1, {b, c}, (b + c) * 0.5, 14.0});
-  v.frontiers.push_back({2, {e, f}, (e + f) * 0.5, 14.0});
-  return v;
-}
-
 PlannerOptions MazeOptions() {
   PlannerOptions o;
   o.frontier_row_gap = 10.0;  // below the 14-wide openings (configs/maze)
@@ -40,8 +28,8 @@ PlannerOptions MazeOptions() {
 }
 
 struct Scene {
-  core::World world = testing::DeadEndMaze();
-  mapping::MapView view = SeenFromStart();
+  core::World world = ::toponav::testing::DeadEndMaze();
+  mapping::MapView view = testing::DeadEndSeenFromStart();
   PlannerOptions options = MazeOptions();
   std::vector<FrontierTarget> targets = FrontierTargets(view, options);
 };

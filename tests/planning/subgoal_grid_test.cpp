@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "planning/raster.h"
+#include "tests/planning/dead_end_view.h"
 #include "tests/testing/worlds.h"
 
 namespace toponav::planning {
@@ -14,7 +15,7 @@ using core::Vec2;
 
 TEST(Raster, FillsPolygonsMinusHolesByCellCentre) {
   const Raster r = Raster::Covering({{0, 0}, {10, 10}}, 1.0);
-  core::Polygon square{testing::Rect(0, 0, 10, 10), {{{3, 3}, {3, 7}, {7, 7}, {7, 3}}}};
+  core::Polygon square{::toponav::testing::Rect(0, 0, 10, 10), {{{3, 3}, {3, 7}, {7, 7}, {7, 3}}}};
   const std::vector<char> in = FillPolygons(r, {square});
   int count = 0;
   for (char c : in) count += c != 0;
@@ -38,30 +39,15 @@ TEST(Raster, DistancesGoAroundBlockedCellsWithoutCuttingCorners) {
   EXPECT_EQ(near.size(), 20u) << "the two rows of cells the line runs between";
 }
 
-// The dead-end maze seen from the start: the stem and the bottom corridor are known; frontiers at the top
-// of the stem (toward the goal) and where the bottom corridor turns up into the dead end.
+// (Not copyable in spirit: 'frontiers' points into 'view'.)
 struct Seen {
-  mapping::MapView view;
-  std::vector<const mapping::Frontier*> frontiers;
+  mapping::MapView view = testing::DeadEndSeenFromStart();
+  std::vector<const mapping::Frontier*> frontiers = testing::FrontiersOf(view);
 };
 
-Seen SeenFromStart() {
-  Seen s;
-  const Vec2 a{0, 0}, b{36, 0}, c{36, 14}, d{14, 14}, e{14, 60}, f{0, 60};
-  s.view.known_space.push_back({{a, b, c, d, e, f}, {}});
-  const std::vector<Vec2> corners{a, b, c, d, e, f};
-  for (size_t i = 0; i < corners.size(); ++i) s.view.vertices.push_back({int(i), corners[i], {}, 5});
-  for (auto [i, j] : {std::pair{0, 1}, {2, 3}, {3, 4}, {5, 0}})
-    s.view.walls.push_back({i, j, corners[size_t(i)], corners[size_t(j)], 0.9});
-  s.view.frontiers.push_back({1, {b, c}, (b + c) * 0.5, 14.0});
-  s.view.frontiers.push_back({2, {e, f}, (e + f) * 0.5, 14.0});
-  for (const auto& fr : s.view.frontiers) s.frontiers.push_back(&fr);
-  return s;
-}
-
 TEST(SubgoalGrid, DistancesRunThroughKnownSpaceToFrontiersAndThroughUnknownSpaceToTheGoal) {
-  const Seen s = SeenFromStart();
-  const core::World w = testing::DeadEndMaze();
+  const Seen s;
+  const core::World w = ::toponav::testing::DeadEndMaze();
   const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
   EXPECT_FALSE(grid.goal_known());
   const OrderingProblem d = grid.Distances();
@@ -74,8 +60,8 @@ TEST(SubgoalGrid, DistancesRunThroughKnownSpaceToFrontiersAndThroughUnknownSpace
 }
 
 TEST(SubgoalGrid, TrueLabelsMarkTheWayToTheGoalAndPriceTheDeadEnd) {
-  const Seen s = SeenFromStart();
-  const core::World w = testing::DeadEndMaze();
+  const Seen s;
+  const core::World w = ::toponav::testing::DeadEndMaze();
   const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
   const OrderingProblem d = grid.Distances();
   const std::vector<SubgoalProperties> p = TrueSubgoalProperties(grid, TrueFreeSpace(w, 1.0, 1.0), d);
@@ -92,8 +78,8 @@ TEST(SubgoalGrid, TrueLabelsMarkTheWayToTheGoalAndPriceTheDeadEnd) {
 }
 
 TEST(SubgoalGrid, LabelsLandInTheRangeBearingCellsOfTheFrontiersTheAgentSees) {
-  const Seen s = SeenFromStart();
-  const core::World w = testing::DeadEndMaze();
+  const Seen s;
+  const core::World w = ::toponav::testing::DeadEndMaze();
   const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
   const std::vector<SubgoalProperties> p{{0.0, 0.0, 80.0}, {1.0, 40.0, 0.0}};
   const core::Pose2 pose{7, 7, core::kPi / 2};  // facing up the stem: the stem's top lies straight ahead

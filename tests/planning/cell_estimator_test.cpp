@@ -1,0 +1,80 @@
+#include "planning/cell_estimator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "planning/subgoal_grid.h"
+#include "tests/planning/dead_end_view.h"
+#include "tests/testing/worlds.h"
+
+namespace toponav::planning {
+namespace {
+
+using core::Vec2;
+
+struct Scene {
+  mapping::MapView view = testing::DeadEndSeenFromStart();
+  std::vector<const mapping::Frontier*> frontiers = testing::FrontiersOf(view);
+};
+
+// An observation at 'pose' whose grid says Ps 'ahead' within 0.6 rad of straight ahead and 'elsewhere' in
+// the other cells, success cost 10 and exploration cost 'explore' everywhere.
+core::Observation Observed(const core::Pose2& pose, float ahead, float elsewhere, float explore) {
+  core::Observation z;
+  z.pose = pose;
+  z.cells.rows = 32;
+  z.cells.cols = 128;
+  z.cells.max_range = 100;
+  z.cells.channels = {"exploration", "ps", "delta_success"};  // any order
+  for (int r = 0; r < 32; ++r)
+    for (int b = 0; b < 128; ++b)
+      z.cells.values.insert(z.cells.values.end(),
+                            {explore, std::abs(core::ColumnToBearing(b, 128)) < 0.6 ? ahead : elsewhere, 10.0f});
+  return z;
+}
+
+TEST(CellAveragingEstimator, AveragesEachFrontiersCellsOverTheObservationsThatSeeIt) {
+  const Scene s;
+  const core::World w = ::toponav::testing::DeadEndMaze();
+  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  const OrderingProblem d = grid.Distances();
+  CellAveragingEstimator e;
+  EXPECT_EQ(e.Estimate(grid, d)[1].ps, 1.0) << "nothing seen yet: the optimistic default";
+  const core::Pose2 up{7, 7, core::kPi / 2};  // the stem's top ahead, the dead end to the right
+  e.Observe(Observed(up, 0.9f, 0.1f, 50.0f));
+  auto p = e.Estimate(grid, d);
+  EXPECT_NEAR(p[1].ps, 0.9, 1e-6);
+  EXPECT_NEAR(p[0].ps, 0.1, 1e-6);
+  EXPECT_NEAR(p[0].exploration, 50.0, 1e-6);
+  EXPECT_NEAR(p[0].delta_success, 10.0, 1e-6);
+  e.Observe(Observed(up, 0.5f, 0.3f, 30.0f));
+  p = e.Estimate(grid, d);
+  EXPECT_NEAR(p[1].ps, 0.7, 1e-6) << "the two observations averaged";
+  EXPECT_NEAR(p[0].exploration, 40.0, 1e-6);
+  // From inside the bottom corridor the stem's top is behind the wall x = 14: that observation only counts
+  // for the dead end.
+  e.Observe(Observed({25, 7, 0.0}, 0.0f, 0.0f, 30.0f));
+  p = e.Estimate(grid, d);
+  EXPECT_NEAR(p[1].ps, 0.7, 1e-6);
+  EXPECT_LT(p[0].ps, 0.2);
+  EXPECT_EQ(e.observations(), 3u);
+}
+
+TEST(CellAveragingEstimator, KeepsOnlyGridsWithTheThreeChannelsAndARecentHistory) {
+  CellAveragingEstimator e(2);
+  e.Observe(core::Observation{});  // no cells (the noisy sensor): ignored
+  EXPECT_EQ(e.observations(), 0u);
+  core::Observation z = Observed({7, 7, 0.0}, 0.5f, 0.5f, 1.0f);
+  for (int i = 0; i < 3; ++i) e.Observe(z);
+  EXPECT_EQ(e.observations(), 2u);
+  z.cells.channels[1] = "logit";
+  EXPECT_THROW(e.Observe(z), core::DataError);
+  z = Observed({7, 7, 0.0}, 0.5f, 0.5f, 1.0f);
+  z.cells.values.pop_back();
+  EXPECT_THROW(e.Observe(z), core::DataError);
+}
+
+}  // namespace
+}  // namespace toponav::planning
