@@ -92,7 +92,7 @@ double ValidationLoss(const VertexModel& model, const std::vector<Example>& val,
   int batches = 0;
   for (size_t i = 0; i < val.size(); i += size_t(batch_size)) {
     std::vector<LabelledImage> batch;
-    for (size_t k = i; k < std::min(val.size(), i + size_t(batch_size)); ++k) batch.push_back({&val[k].image, &val[k].labels});
+    for (size_t k = i; k < std::min(val.size(), i + size_t(batch_size)); ++k) batch.push_back({&val[k].image, &val[k].labels, {}, nullptr});
     sum += model.Loss(batch);
     ++batches;
   }
@@ -202,7 +202,7 @@ TrainResult Train(const sim::DatagenOptions& data, const sim::WorldOptions& worl
     std::vector<Example> rolled;
     for (const auto& [i, cols] : order.Batch(step)) rolled.push_back(Rolled(train[i], cols));
     std::vector<LabelledImage> batch;
-    for (const auto& e : rolled) batch.push_back({&e.image, &e.labels});
+    for (const auto& e : rolled) batch.push_back({&e.image, &e.labels, {}, nullptr});
     loss_sum += model.TrainStep(batch, o.LearningRate(step));
     ++loss_count;
     const bool validate = (step + 1) % o.validate_every == 0 || step + 1 == o.steps;

@@ -31,28 +31,60 @@ torch::Tensor LabelTensor(const sim::VertexLabelGrid& g) {
   return torch::from_blob(const_cast<uint8_t*>(g.cells.data()), {32, 128}, torch::kUInt8).to(torch::kInt64);
 }
 
+// [4, 64, 256]: mask, Ps, success cost, exploration cost.
+torch::Tensor SubgoalTensor(const core::SubgoalLabelGrid& g) {
+  TOPONAV_CHECK(g.grid.rows == 64 && g.grid.cols == 256 && g.mask.size() == g.grid.size() && g.ps.size() == g.grid.size() &&
+                    g.delta_success.size() == g.grid.size() && g.exploration.size() == g.grid.size(),
+                "subgoal labels must be 64x256");
+  const auto f = [](const std::vector<float>& v) { return torch::from_blob(const_cast<float*>(v.data()), {64, 256}, torch::kFloat32); };
+  const auto mask = torch::from_blob(const_cast<uint8_t*>(g.mask.data()), {64, 256}, torch::kUInt8).to(torch::kFloat32);
+  return torch::stack({mask, f(g.ps), f(g.delta_success), f(g.exploration)});
+}
+
+// Sum of v over the mask's cells / (the mask's count + 1) (lsp.md §2.7: a masked mean that is 0 when empty).
+torch::Tensor MaskedMean(const torch::Tensor& v, const torch::Tensor& mask) { return (v * mask).sum() / (mask.sum() + 1.0); }
+
 }  // namespace
 
 struct VertexModel::Impl {
   VertexNetOptions options;
   std::string notes;
   torch::Device device{torch::kCPU};
-  internal::VertexNet net{nullptr};
+  internal::VertexNet net{nullptr};     // the vertex network, or ...
+  internal::SubgoalNet sub{nullptr};    // ... its LSP extension (options.subgoal)
   std::unique_ptr<torch::optim::Adam> adam;
 
-  // [B, 5, 32, 128] logits and the batch's labels [B, 32, 128].
-  std::pair<torch::Tensor, torch::Tensor> Forward(const std::vector<LabelledImage>& batch) {
+  torch::nn::Module& module() { return options.subgoal ? static_cast<torch::nn::Module&>(*sub) : *net; }
+  // Vertex logits [B, 5, 32, 128] and subgoal outputs [B, 3, 64, 256] (undefined without the extension).
+  std::pair<torch::Tensor, torch::Tensor> Run(const torch::Tensor& images, const std::vector<GoalInView>& goals) {
+    if (!options.subgoal) return {net->forward(images), torch::Tensor()};
+    std::vector<torch::Tensor> g;
+    for (const auto& goal : goals) g.push_back(internal::GoalImage(goal.range, goal.bearing));
+    return sub->forward(images, torch::stack(g).to(device));
+  }
+
+  // vertex_weight * weighted BCE on the vertex logit + the label cross-entropy over vertex cells, and for the
+  // extension the masked subgoal terms.
+  torch::Tensor BatchLoss(const std::vector<LabelledImage>& batch) {
     TOPONAV_CHECK(!batch.empty(), "an empty batch");
-    std::vector<torch::Tensor> images, labels;
+    std::vector<torch::Tensor> images, labels, subgoal;
+    std::vector<GoalInView> goals;
     for (const auto& b : batch) {
       images.push_back(ImageTensor(*b.image));
       labels.push_back(LabelTensor(*b.labels));
+      goals.push_back(b.goal);
+      if (options.subgoal) {
+        TOPONAV_CHECK(b.subgoal, "a subgoal model's training example without subgoal labels");
+        subgoal.push_back(SubgoalTensor(*b.subgoal));
+      }
     }
-    return {net->forward(torch::stack(images).to(device)), torch::stack(labels).to(device)};
+    const auto [logits, out] = Run(torch::stack(images).to(device), goals);
+    auto loss = VertexLoss(logits, torch::stack(labels).to(device));
+    if (options.subgoal) loss = loss + SubgoalLoss(out, torch::stack(subgoal).to(device));
+    return loss;
   }
 
-  // vertex_weight * weighted BCE on the vertex logit + the label cross-entropy over vertex cells.
-  torch::Tensor LossOf(const torch::Tensor& logits, const torch::Tensor& cells) const {
+  torch::Tensor VertexLoss(const torch::Tensor& logits, const torch::Tensor& cells) const {
     const auto is_vertex = cells.gt(0).to(torch::kFloat32);
     const auto bce = F::binary_cross_entropy_with_logits(
         logits.select(1, 0), is_vertex,
@@ -60,8 +92,16 @@ struct VertexModel::Impl {
     const auto log_p = F::log_softmax(logits.slice(1, 1, 5), 1);
     const auto target = (cells - 1).clamp_min(0);
     const auto nll = -log_p.gather(1, target.unsqueeze(1)).squeeze(1);
-    const auto label_term = (nll * is_vertex).sum() / (is_vertex.sum() + 1.0);
-    return options.vertex_weight * bce + label_term;
+    return options.vertex_weight * bce + MaskedMean(nll, is_vertex);
+  }
+
+  // out [B, 3, 64, 256] (Ps logit, success cost, exploration cost); labels [B, 4, 64, 256] (mask, Ps, costs).
+  static torch::Tensor SubgoalLoss(const torch::Tensor& out, const torch::Tensor& labels) {
+    const auto mask = labels.select(1, 0), y = labels.select(1, 1);
+    const auto bce = F::binary_cross_entropy_with_logits(out.select(1, 0), y, F::BinaryCrossEntropyWithLogitsFuncOptions().reduction(torch::kNone));
+    const auto ds = (out.select(1, 1) - labels.select(1, 2)).pow(2) / 1e4;
+    const auto re = (out.select(1, 2) - labels.select(1, 3)).pow(2) / 4e4;
+    return MaskedMean(bce, mask) + MaskedMean(ds, mask * y) + MaskedMean(re, mask * (1 - y));
   }
 };
 
@@ -72,38 +112,61 @@ VertexModel::VertexModel(const VertexNetOptions& options, uint64_t seed, const s
   torch::manual_seed(seed);
   impl_->options = options;
   impl_->device = torch::Device(device);
-  impl_->net = internal::VertexNet(options.width);
-  impl_->net->to(impl_->device);
+  if (options.subgoal) impl_->sub = internal::SubgoalNet(options.width);
+  else impl_->net = internal::VertexNet(options.width);
+  impl_->module().to(impl_->device);
 }
 VertexModel::~VertexModel() = default;
 VertexModel::VertexModel(VertexModel&&) noexcept = default;
 VertexModel& VertexModel::operator=(VertexModel&&) noexcept = default;
 
-GridOutput VertexModel::Predict(const core::Panorama& image) const {
-  torch::NoGradGuard no_grad;
-  impl_->net->eval();
-  const auto logits = impl_->net->forward(ImageTensor(image).unsqueeze(0).to(impl_->device)).squeeze(0).to(torch::kCPU);
+namespace {
+
+std::vector<float> Values(const torch::Tensor& t) {
+  const auto c = t.contiguous();
+  return {c.data_ptr<float>(), c.data_ptr<float>() + c.numel()};
+}
+
+GridOutput VertexGrid(const torch::Tensor& logits) {  // [5, 32, 128]
   GridOutput out;
-  const auto vertex = torch::sigmoid(logits.select(0, 0)).contiguous();
-  const auto labels = torch::softmax(logits.slice(0, 1, 5), 0).permute({1, 2, 0}).contiguous();  // [32, 128, 4]
-  out.vertex.assign(vertex.data_ptr<float>(), vertex.data_ptr<float>() + vertex.numel());
-  out.labels.assign(labels.data_ptr<float>(), labels.data_ptr<float>() + labels.numel());
+  out.vertex = Values(torch::sigmoid(logits.select(0, 0)));
+  out.labels = Values(torch::softmax(logits.slice(0, 1, 5), 0).permute({1, 2, 0}));  // [32, 128, 4]
   return out;
+}
+
+}  // namespace
+
+std::pair<GridOutput, SubgoalOutput> VertexModel::PredictWithGoal(const core::Panorama& image, const GoalInView& goal) const {
+  TOPONAV_CHECK(impl_->options.subgoal, "PredictWithGoal on a model without the subgoal extension");
+  torch::NoGradGuard no_grad;
+  impl_->module().eval();
+  const auto [logits, out] = impl_->Run(ImageTensor(image).unsqueeze(0).to(impl_->device), {goal});
+  SubgoalOutput s;
+  const auto o = out.squeeze(0).to(torch::kCPU);
+  s.ps = Values(torch::sigmoid(o.select(0, 0)));
+  s.delta_success = Values(o.select(0, 1));
+  s.exploration = Values(o.select(0, 2));
+  return {VertexGrid(logits.squeeze(0).to(torch::kCPU)), s};
+}
+
+GridOutput VertexModel::Predict(const core::Panorama& image) const {
+  if (impl_->options.subgoal) return PredictWithGoal(image, {}).first;
+  torch::NoGradGuard no_grad;
+  impl_->module().eval();
+  return VertexGrid(impl_->net->forward(ImageTensor(image).unsqueeze(0).to(impl_->device)).squeeze(0).to(torch::kCPU));
 }
 
 double VertexModel::Loss(const std::vector<LabelledImage>& batch) const {
   torch::NoGradGuard no_grad;
-  impl_->net->eval();
-  const auto [logits, cells] = impl_->Forward(batch);
-  return impl_->LossOf(logits, cells).item<double>();
+  impl_->module().eval();
+  return impl_->BatchLoss(batch).item<double>();
 }
 
 double VertexModel::TrainStep(const std::vector<LabelledImage>& batch, double lr) {
-  impl_->net->train();
-  if (!impl_->adam) impl_->adam = std::make_unique<torch::optim::Adam>(impl_->net->parameters(), torch::optim::AdamOptions(lr));
+  impl_->module().train();
+  if (!impl_->adam) impl_->adam = std::make_unique<torch::optim::Adam>(impl_->module().parameters(), torch::optim::AdamOptions(lr));
   for (auto& group : impl_->adam->param_groups()) static_cast<torch::optim::AdamOptions&>(group.options()).lr(lr);  // keeps the moments
-  const auto [logits, cells] = impl_->Forward(batch);
-  const auto loss = impl_->LossOf(logits, cells);
+  const auto loss = impl_->BatchLoss(batch);
   impl_->adam->zero_grad();
   loss.backward();
   impl_->adam->step();
@@ -115,7 +178,7 @@ const std::string& VertexModel::notes() const { return impl_->notes; }
 
 int64_t VertexModel::num_parameters() const {
   int64_t n = 0;
-  for (const auto& p : impl_->net->parameters()) n += p.numel();
+  for (const auto& p : impl_->module().parameters()) n += p.numel();
   return n;
 }
 
@@ -125,9 +188,10 @@ void VertexModel::Save(const std::string& path, const std::string& notes) const 
   meta["width"] = impl_->options.width;
   meta["positive_weight"] = impl_->options.positive_weight;
   meta["vertex_weight"] = impl_->options.vertex_weight;
+  meta["subgoal"] = impl_->options.subgoal;
   meta["notes"] = notes;
   torch::serialize::OutputArchive archive;
-  impl_->net->save(archive);
+  impl_->module().save(archive);
   archive.write(kMetadataKey, c10::IValue(meta.dump()));
   try {
     archive.save_to(path);
@@ -158,22 +222,24 @@ VertexModel VertexModel::Load(const std::string& path, const std::string& device
   o.width = meta.value("width", 1.0);
   o.positive_weight = meta.value("positive_weight", 8.0);
   o.vertex_weight = meta.value("vertex_weight", 500.0);
+  o.subgoal = meta.value("subgoal", false);
   VertexModel model(o, 0, device);
   // (Module::load replaces tensors whatever their shape: compare every shape with the declared architecture.)
   std::vector<std::vector<int64_t>> expected;
-  for (const auto& t : model.impl_->net->named_parameters()) expected.push_back(t.value().sizes().vec());
-  for (const auto& t : model.impl_->net->named_buffers()) expected.push_back(t.value().sizes().vec());
+  torch::nn::Module& net = model.impl_->module();
+  for (const auto& t : net.named_parameters()) expected.push_back(t.value().sizes().vec());
+  for (const auto& t : net.named_buffers()) expected.push_back(t.value().sizes().vec());
   bool fits = true;
   try {
-    model.impl_->net->load(archive);
+    net.load(archive);
     size_t k = 0;
-    for (const auto& t : model.impl_->net->named_parameters()) fits = fits && t.value().sizes().vec() == expected[k++];
-    for (const auto& t : model.impl_->net->named_buffers()) fits = fits && t.value().sizes().vec() == expected[k++];
+    for (const auto& t : net.named_parameters()) fits = fits && t.value().sizes().vec() == expected[k++];
+    for (const auto& t : net.named_buffers()) fits = fits && t.value().sizes().vec() == expected[k++];
   } catch (const c10::Error&) {
     fits = false;
   }
   if (!fits) throw core::DataError(path, "its weights do not fit the architecture it declares (width " + std::to_string(o.width) + ")");
-  model.impl_->net->to(model.impl_->device);
+  net.to(model.impl_->device);
   model.impl_->notes = meta.value("notes", "");
   return model;
 }

@@ -6,21 +6,29 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/image.h"
 #include "core/range_bearing_grid.h"
+#include "core/subgoal_labels.h"
 #include "sim/vertex_labels.h"
 
 namespace toponav::learning {
 
 struct VertexNetOptions {
   double width = 1.0;  // channel multiplier: 1.0 is the paper's [64,64,128,128,256] / [128,64,64]; 0.25 a CPU-sized net
+  // The LSP extension (paper Sec. V): the goal as input, and one more decoder block to a 64x256 grid of
+  // subgoal outputs (Ps, success cost, exploration cost); its loss (lsp.md §2.7) adds masked means over the
+  // frontier cells: the Ps cross-entropy, and the squared cost errors scaled by 1/100^2 and 1/200^2.
+  bool subgoal = false;
   // Loss (vertexnav.md §4.4): weighted BCE on the vertex logit (positives count positive_weight times), times
   // vertex_weight, plus the label cross-entropy over vertex cells.
   double positive_weight = 8.0;
   double vertex_weight = 500.0;
-  bool operator==(const VertexNetOptions& o) const { return width == o.width && positive_weight == o.positive_weight && vertex_weight == o.vertex_weight; }
+  bool operator==(const VertexNetOptions& o) const {
+    return width == o.width && positive_weight == o.positive_weight && vertex_weight == o.vertex_weight && subgoal == o.subgoal;
+  }
 };
 
 // The network's output for one panorama: per cell, the vertex probability and the 4 label probabilities
@@ -31,10 +39,24 @@ struct GridOutput {
   std::vector<float> labels;  // 4 * grid.size()
 };
 
-// One training example.
+// The subgoal network's output for one panorama and goal, on its 64x256 grid: per cell the probability that
+// a frontier there leads to the goal, and the success and exploration costs.
+struct SubgoalOutput {
+  core::RangeBearingGrid grid{64, 256, 100.0};
+  std::vector<float> ps, delta_success, exploration;
+};
+
+// Where the goal is, seen from the panorama's pose (radians counter-clockwise from the heading).
+struct GoalInView {
+  double range = 0.0, bearing = 0.0;
+};
+
+// One training example (subgoal models also need 'goal' and 'subgoal', labels on their 64x256 grid).
 struct LabelledImage {
   const core::Panorama* image = nullptr;
   const sim::VertexLabelGrid* labels = nullptr;
+  GoalInView goal;
+  const core::SubgoalLabelGrid* subgoal = nullptr;
 };
 
 class VertexModel {
@@ -47,6 +69,9 @@ class VertexModel {
 
   // Inference on 128x512 panoramas (throws core::DataError for another size).
   GridOutput Predict(const core::Panorama& image) const;
+  // A subgoal model's inference: the vertex grid and the subgoal grid for the goal (core::InternalError for a
+  // model without the extension; Predict gives its vertex grid for a goal straight ahead at range 0).
+  std::pair<GridOutput, SubgoalOutput> PredictWithGoal(const core::Panorama& image, const GoalInView& goal) const;
   // The loss on a batch, without training.
   double Loss(const std::vector<LabelledImage>& batch) const;
   // One Adam step on a batch (learning rate 'lr'); returns the batch's loss before the step.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/range_bearing_grid.h"
+#include "core/subgoal_labels.h"
 #include "core/world.h"
 #include "mapping/mapping.h"
 #include "planning/raster.h"
@@ -81,11 +82,7 @@ std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, co
 // Frontier properties on the sensor's range-bearing grid (lsp.md §2.6): the labels the subgoal network
 // learns.  Each cell of each frontier within range that 'visible' accepts (a world point: seen from the pose)
 // marks its grid cell with the frontier's properties; a later frontier overwrites an earlier one.
-struct SubgoalLabelGrid {
-  core::RangeBearingGrid grid;
-  std::vector<uint8_t> mask;                         // 1: a frontier cell
-  std::vector<float> ps, delta_success, exploration; // its frontier's properties (0 elsewhere)
-};
+using core::SubgoalLabelGrid;
 SubgoalLabelGrid RasterizeSubgoalLabels(const SubgoalGrid& grid, const std::vector<SubgoalProperties>& properties,
                                         const core::Pose2& pose, const core::RangeBearingGrid& rb,
                                         const std::function<bool(const core::Vec2&)>& visible);

@@ -46,7 +46,7 @@ void BM_TrainStep(benchmark::State& state) {
   o.width = state.range(0) / 100.0;
   learning::VertexModel m(o, 1);
   const Data& d = OnePanorama();
-  const std::vector<learning::LabelledImage> batch(size_t(state.range(1)), {&d.image, &d.labels});
+  const std::vector<learning::LabelledImage> batch(size_t(state.range(1)), {&d.image, &d.labels, {}, nullptr});
   for (auto _ : state) benchmark::DoNotOptimize(m.TrainStep(batch, 1e-3));
 }
 BENCHMARK(BM_TrainStep)->Args({25, 8})->Args({100, 8})->Iterations(3)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "learning/internal/vertex_net.h"
+#include "tests/learning/rendered_examples.h"
 #include "sim/raycast.h"
 #include "sim/render.h"
 #include "sim/worlds.h"
@@ -29,20 +30,15 @@ struct Examples {
   std::vector<sim::VertexLabelGrid> labels;
   std::vector<LabelledImage> batch() const {
     std::vector<LabelledImage> b;
-    for (size_t i = 0; i < images.size(); ++i) b.push_back({&images[i], &labels[i]});
+    for (size_t i = 0; i < images.size(); ++i) b.push_back({&images[i], &labels[i], {}, nullptr});
     return b;
   }
 };
 Examples MakeExamples() {
-  const core::World w = sim::GenerateLabyrinth({}, 4);
-  const sim::Renderer renderer(w, {});
-  const sim::RayCaster caster(w);
+  testing::Rendered r = testing::RenderAtStart(sim::GenerateLabyrinth({}, 4));
   Examples e;
-  for (double yaw : {0.0, 2.0}) {
-    const core::Pose2 pose{w.start.x, w.start.y, yaw};
-    e.images.push_back(renderer.Render(pose));
-    e.labels.push_back(sim::RasterizeVertexLabels(caster.VisibleVertices(pose, 100.0), core::RangeBearingGrid{}));
-  }
+  e.images = std::move(r.images);
+  e.labels = std::move(r.labels);
   return e;
 }
 
