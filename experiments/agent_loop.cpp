@@ -55,6 +55,8 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   state.world = &world;
   state.trails = &r.paths;
   state.step_length = motion_options.step_length;
+  std::vector<core::Observation> observations;
+  state.observations = &observations;
   mapping::MapView view;
   state.view = &view;
   std::vector<std::vector<core::Vec2>> paths(size_t(o.num_agents));
@@ -63,7 +65,11 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
     state.step = step;
     state.poses.clear();
     for (int a = 0; a < o.num_agents; ++a) state.poses.push_back(motion.Pose(a));
-    for (int a = 0; a < o.num_agents; ++a) mapper.AddObservation(sensor->Observe(state.poses[size_t(a)], a));
+    observations.clear();
+    for (int a = 0; a < o.num_agents; ++a) {
+      observations.push_back(sensor->Observe(state.poses[size_t(a)], a));
+      mapper.AddObservation(observations.back());
+    }
     const auto t1 = Clock::now();
     if (o.mcmc_every > 0 && step % o.mcmc_every == 0) {
       mapper.SampleMostLikelyMap(rng, o.mcmc_samples);

@@ -25,6 +25,7 @@ struct LoopState {
   const core::World* world = nullptr;
   const mapping::MapView* view = nullptr;                   // after this step's observations
   std::vector<core::Pose2> poses;                           // before the agents move
+  const std::vector<core::Observation>* observations = nullptr;  // this step's, one per agent
   const std::vector<std::vector<core::Vec2>>* trails = nullptr;  // each agent's positions so far
   double step_length = 0.0;                                 // how far an agent steps in this world
 };

@@ -181,7 +181,7 @@ void ReadBench(YamlSection b, BenchOptions* bench) {
     r.kind = ReadWorldKind(row, "kind", kind);
     row.Read("agents", &r.agents, 1, 16);
     row.Read("planner", &r.planner);
-    if (!r.planner.empty() && !ParseGoalPlanner(r.planner)) row.Fail("planner", r.planner, "not a goal-directed planner (optimistic, oracle)");
+    if (!r.planner.empty() && !ParseGoalPlanner(r.planner)) row.Fail("planner", r.planner, "not a goal-directed planner (optimistic, oracle, lsp)");
     if (!r.planner.empty() && r.agents != 1) row.Fail("agents", std::to_string(r.agents), "navigation trials have one agent");
     row.Finish();
     bench->rows.push_back(r);

@@ -32,7 +32,7 @@ struct DemoJob {
 struct BenchRow {
   core::WorldKind kind = core::WorldKind::kLabyrinth;
   int agents = 1;
-  std::string planner;  // "" (a search) or a goal-directed planner: "optimistic", "oracle"
+  std::string planner;  // "" (a search) or a goal-directed planner: "optimistic", "oracle", "lsp"
 };
 
 struct BenchOptions {

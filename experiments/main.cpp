@@ -103,7 +103,7 @@ struct TrialArgs : WorldSource {
 int RunNavigationCommand(const TrialArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
   const auto planner = experiments::ParseGoalPlanner(a.planner);
-  if (!planner) throw core::ConfigError("<command line>", "--planner", a.planner, "not a goal-directed planner (optimistic, oracle)");
+  if (!planner) throw core::ConfigError("<command line>", "--planner", a.planner, "not a goal-directed planner (optimistic, oracle, lsp)");
   const uint64_t seed = experiments::ParseSeed(a.seed);
   const core::World w = StartAtPose(WorldFromSource(a, cfg), a.pose);
   EnsureDir(a.out);
@@ -313,7 +313,7 @@ CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
   trial->add_option("--out", a->out, "Output directory: trial.png")->capture_default_str();
   trial->add_option("--video", a->video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
   trial->add_option("--trace", a->trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals");
-  trial->add_option("--planner", a->planner, "Run goal-directed navigation (start to goal, one agent) with this planner instead: optimistic, oracle");
+  trial->add_option("--planner", a->planner, "Run goal-directed navigation (start to goal, one agent) with this planner instead: optimistic, oracle, lsp");
   trial->add_option("--frames-every", a->frames_every, "Navigation: also draw the map every this many steps (frame_NNNN.png)")
       ->check(CLI::Range(1, 100000));
   return trial;

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "experiments/agent_loop.h"
 #include "experiments/map_drive.h"
+#include "planning/cell_estimator.h"
 #include "planning/given_up_frontiers.h"
 #include "planning/lsp_planner.h"
 #include "planning/search_policy.h"
@@ -26,10 +27,19 @@ bool Huddled(const std::deque<Vec2>& window, double span) {
   return true;
 }
 
-std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, const Config& config, GoalPlanner kind) {
+// The planner 'kind' names; for "lsp" also its estimator, which the policy feeds the observations.
+std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, const Config& config, GoalPlanner kind,
+                                                     planning::CellAveragingEstimator** cells) {
   if (kind == GoalPlanner::kOptimistic) return planning::CreatePlanner(planning::PlannerKind::kOptimistic);
-  return planning::CreateLspPlanner(planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance),
-                                    config.lsp, config.planning, world.bounds, ToString(kind));
+  std::unique_ptr<planning::SubgoalEstimator> estimator;
+  if (kind == GoalPlanner::kOracle) {
+    estimator = planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance);
+  } else {
+    auto averaging = std::make_unique<planning::CellAveragingEstimator>();
+    *cells = averaging.get();
+    estimator = std::move(averaging);
+  }
+  return planning::CreateLspPlanner(std::move(estimator), config.lsp, config.planning, world.bounds, ToString(kind));
 }
 
 // The view with the region's edges as walls: the region of interest (the maze's extent) is known, and a
@@ -66,7 +76,7 @@ class NavigationPolicy : public AgentPolicy {
         region_(world.bounds),
         options_(config.navigation),
         planning_(config.planning),
-        planner_(CreateGoalPlanner(world, config, kind)),
+        planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         block_reach_(config.search.give_up_distance) {}
@@ -74,6 +84,8 @@ class NavigationPolicy : public AgentPolicy {
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();
     if (core::Distance(at, goal_) <= options_.goal_radius) return End("goal");
+    if (cells_ && state.observations)
+      for (const auto& z : *state.observations) cells_->Observe(z);
     window_.push_back(at);
     if (int(window_.size()) > options_.stuck_window) window_.pop_front();
     if (int(window_.size()) == options_.stuck_window && Huddled(window_, options_.stuck_span)) return End("stuck");
@@ -131,6 +143,7 @@ class NavigationPolicy : public AgentPolicy {
   NavigationOptions options_;
   planning::PlannerOptions planning_;
   std::unique_ptr<planning::Planner> planner_;
+  planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   planning::StuckMonitor stuck_;
   planning::GivenUpFrontiers blocked_;
   double block_reach_;
@@ -143,10 +156,17 @@ class NavigationPolicy : public AgentPolicy {
 
 }  // namespace
 
-const char* ToString(GoalPlanner planner) { return planner == GoalPlanner::kOptimistic ? "optimistic" : "oracle"; }
+const char* ToString(GoalPlanner planner) {
+  switch (planner) {
+    case GoalPlanner::kOptimistic: return "optimistic";
+    case GoalPlanner::kOracle: return "oracle";
+    case GoalPlanner::kLsp: return "lsp";
+  }
+  return "?";
+}
 
 std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name) {
-  for (const auto p : {GoalPlanner::kOptimistic, GoalPlanner::kOracle})
+  for (const auto p : {GoalPlanner::kOptimistic, GoalPlanner::kOracle, GoalPlanner::kLsp})
     if (name == ToString(p)) return p;
   return std::nullopt;
 }

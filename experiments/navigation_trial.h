@@ -19,8 +19,10 @@
 namespace toponav::experiments {
 
 // The goal-directed planners a trial (a bench row's `planner:`) may name: "optimistic" (the baseline: unknown
-// space is free), "oracle" (LSP with the true frontier properties: the bound a perfect network reaches).
-enum class GoalPlanner { kOptimistic, kOracle };
+// space is free), "oracle" (LSP with the true frontier properties: the bound a perfect network reaches),
+// "lsp" (LSP with the sensor's per-cell subgoal estimates averaged per frontier, planning::CellAveragingEstimator;
+// with a sensor that gives none every frontier keeps the optimistic default).
+enum class GoalPlanner { kOptimistic, kOracle, kLsp };
 const char* ToString(GoalPlanner planner);
 std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name);
 

@@ -13,6 +13,7 @@ class WalkEast : public AgentPolicy {
   explicit WalkEast(int steps) : steps_(steps) {}
   bool Plan(const LoopState& state, std::vector<std::vector<core::Vec2>>* paths) override {
     observations.push_back(state.view->num_observations);
+    this_step.push_back(state.observations ? int(state.observations->size()) : -1);
     if (state.step >= steps_) return false;
     for (size_t a = 0; a < paths->size(); ++a) (*paths)[a] = {state.poses[a].position() + core::Vec2{10, 0}};
     return true;
@@ -22,7 +23,7 @@ class WalkEast : public AgentPolicy {
     ++after_steps;
     return step;
   }
-  std::vector<int> observations;
+  std::vector<int> observations, this_step;
   int after_steps = 0;
 
  private:
@@ -41,6 +42,7 @@ TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndThePolicyEndsTheRu
   EXPECT_EQ(r.steps, 5) << "four steps moved, the fifth ended the run";
   EXPECT_TRUE(r.ended_by_policy);
   EXPECT_EQ(policy.observations, (std::vector<int>{2, 4, 6, 8, 10})) << "both agents observe every step";
+  EXPECT_EQ(policy.this_step, (std::vector<int>{2, 2, 2, 2, 2})) << "the policy sees this step's observations";
   EXPECT_EQ(policy.after_steps, 8);
   EXPECT_EQ(calls, 5) << "after each of the 4 moves, and once with the final map";
   ASSERT_EQ(r.paths.size(), 2u);

@@ -87,5 +87,18 @@ TEST(NavigationTrial, TheOracleSkipsTheDeadEndTheOptimisticPlannerWalksInto) {
   EXPECT_GT(oracle_low, 55.0) << "the oracle's agent crossed x 30-60 only along the top corridor";
 }
 
+TEST(NavigationTrial, LspWithASensorThatGivesNoSubgoalEstimatesStillReachesTheGoal) {
+  // The noisy sensor has no per-cell outputs: every frontier keeps the optimistic default (Ps 1, costs 0).
+  const Config cfg = ExactMazeConfig();
+  NavigationTrialOptions o;
+  o.planner = GoalPlanner::kLsp;
+  const NavigationResult r = RunNavigationTrial(SmallMaze(7), cfg, o, 7);
+  EXPECT_TRUE(r.reached) << r.end_reason;
+  EXPECT_EQ(r.planner, "lsp");
+  for (const auto& [id, ps] : r.frontier_ps) EXPECT_EQ(ps, 1.0);
+  EXPECT_EQ(ParseGoalPlanner("lsp"), GoalPlanner::kLsp);
+  EXPECT_FALSE(ParseGoalPlanner("greedy"));
+}
+
 }  // namespace
 }  // namespace toponav::experiments
