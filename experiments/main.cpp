@@ -207,7 +207,7 @@ int RunReport(const std::vector<std::string>& dirs, std::string out) {
     wrote.insert(wrote.end(), {"report.csv", "steps.png"});
   }
   if (const auto rows = experiments::SummarizeNavigation(records); !rows.empty()) {
-    md += (md.empty() ? "" : "\n") + experiments::NavigationMarkdown(rows);
+    md += (md.empty() ? "" : "\n") + experiments::NavigationMarkdown(rows, records);
     WriteTextFile((fs::path(out) / "navigation.csv").string(), experiments::NavigationCsv(rows));
     experiments::WriteCostScatter(records, (fs::path(out) / "costs.png").string());
     wrote.insert(wrote.end(), {"navigation.csv", "costs.png"});

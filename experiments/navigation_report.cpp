@@ -30,18 +30,25 @@ std::map<uint64_t, double> Costs(const std::vector<TrialRecord>& records, int ki
 }
 
 void SetReduction(const std::vector<TrialRecord>& records, NavigationReportRow* row) {
-  row->reduction = kNaN;
+  row->reduction = row->median_ratio = kNaN;
   if (row->planner == kBaseline) return;
   const auto base = Costs(records, int(row->kind), kBaseline), mine = Costs(records, int(row->kind), row->planner);
   double b = 0, m = 0;
+  std::vector<double> ratios;
   for (const auto& [seed, cost] : mine) {
     const auto it = base.find(seed);
     if (it == base.end()) continue;
     b += it->second;
     m += cost;
     ++row->paired;
+    if (it->second > 0) ratios.push_back(cost / it->second);
   }
   if (row->paired > 0 && b > 0) row->reduction = (b - m) / b;
+  if (!ratios.empty()) {
+    std::sort(ratios.begin(), ratios.end());
+    const size_t h = ratios.size() / 2;
+    row->median_ratio = ratios.size() % 2 ? ratios[h] : 0.5 * (ratios[h - 1] + ratios[h]);
+  }
 }
 
 }  // namespace
@@ -79,28 +86,39 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
   return out;
 }
 
-std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows) {
+std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, const std::vector<TrialRecord>& records) {
   std::ostringstream os;
-  os << "| environment | planner | reached goal | mean cost | total cost | reduction vs optimistic | mean steps | mean IoU "
-        "| failed runs | s/trial |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  os << "| environment | planner | reached goal | mean cost | total cost | reduction vs optimistic | median cost ratio "
+        "| mean steps | mean IoU | failed runs | s/trial |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
-    char reduction[64] = "-";
+    char reduction[64] = "-", ratio[32] = "-";
     if (!std::isnan(r.reduction)) std::snprintf(reduction, sizeof reduction, "%.1f %% (%d seeds)", 100 * r.reduction, r.paired);
+    if (!std::isnan(r.median_ratio)) std::snprintf(ratio, sizeof ratio, "%.3f", r.median_ratio);
     char buf[400];
-    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %.1f | %.4f | %d | %.1f |\n", core::ToString(r.kind),
-                  r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction, r.mean_steps, r.mean_iou,
-                  r.failed, r.mean_wall_s);
+    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %.1f | %.4f | %d | %.1f |\n",
+                  core::ToString(r.kind), r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction, ratio,
+                  r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s);
     os << buf;
+  }
+  std::vector<std::string> short_of_goal;
+  for (const auto& r : records)
+    if (!r.id.planner.empty() && (!r.ok || !r.success))
+      short_of_goal.push_back("- " + r.id.Key() + ": " + (r.ok ? r.end_reason + " after " + std::to_string(r.steps) + " steps" : "failed: " + r.error));
+  if (!short_of_goal.empty()) {
+    os << "\nShort of the goal (" << short_of_goal.size() << "):\n";
+    for (const auto& line : short_of_goal) os << line << "\n";
   }
   return os.str();
 }
 
 std::string NavigationCsv(const std::vector<NavigationReportRow>& rows) {
   std::ostringstream os;
-  os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,mean_steps,mean_iou,mean_wall_s\n";
+  os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,median_ratio,mean_steps,mean_iou,"
+        "mean_wall_s\n";
   for (const auto& r : rows)
     os << core::ToString(r.kind) << "," << r.planner << "," << r.trials << "," << r.reached << "," << r.failed << ","
-       << r.mean_cost << "," << r.total_cost << "," << r.reduction << "," << r.paired << "," << r.mean_steps << ","
+       << r.mean_cost << "," << r.total_cost << "," << r.reduction << "," << r.paired << "," << r.median_ratio << ","
+       << r.mean_steps << ","
        << r.mean_iou << "," << r.mean_wall_s << "\n";
   return os.str();
 }

@@ -18,12 +18,15 @@ struct NavigationReportRow {
   // Against the optimistic planner on the seeds both finished (NaN for the optimistic row, or without one).
   double reduction = 0.0;
   int paired = 0;                           // seeds the reduction is over
+  double median_ratio = 0.0;                // median over those seeds of planner cost / optimistic cost (NaN as above)
   double mean_steps = 0.0, mean_iou = 0.0, mean_wall_s = 0.0;
 };
 
 // Rows for the records that name a planner, by kind then planner (optimistic first).
 std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialRecord>& records);
-std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows);
+// The table, then the trials that did not reach the goal (key, end reason, steps), one line each.
+std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows,
+                               const std::vector<TrialRecord>& records = {});
 std::string NavigationCsv(const std::vector<NavigationReportRow>& rows);
 // One panel per (kind, planner other than optimistic): each seed a point at (optimistic cost, planner cost),
 // with the y = x line; below the line the planner travelled less.  PNG.
