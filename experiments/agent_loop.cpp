@@ -1,6 +1,7 @@
 #include "experiments/agent_loop.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "core/error.h"
 #include "experiments/sensor_factory.h"
@@ -33,6 +34,11 @@ void MoveAgents(const LoopState& state, const std::vector<std::vector<core::Vec2
 }
 
 }  // namespace
+
+sim::StepResult NudgeRandomly(sim::MotionSim& motion, int agent, double distance, core::Rng& rng) {
+  const double angle = rng.Uniform(-core::kPi, core::kPi);
+  return motion.Nudge(agent, core::Vec2{std::cos(angle), std::sin(angle)} * distance);
+}
 
 LoopResult RunAgentLoop(const core::World& world, const Config& config, const LoopOptions& o, AgentPolicy& policy,
                         uint64_t seed) {

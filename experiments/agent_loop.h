@@ -45,6 +45,10 @@ class AgentPolicy {
   }
 };
 
+// A stuck agent's way out (the paper's failures were agents stuck in place feeding identical images): a step
+// of 'distance' in a direction drawn from 'rng'; the step as it ended.
+sim::StepResult NudgeRandomly(sim::MotionSim& motion, int agent, double distance, core::Rng& rng);
+
 struct LoopOptions {
   int num_agents = 1;
   int max_steps = 400;

@@ -47,8 +47,7 @@ std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, c
 // graph would lead around its near end out of the world.
 mapping::MapView WithRegionWalls(const mapping::MapView& view, const core::Aabb2& region) {
   mapping::MapView v = view;
-  const Vec2 a = region.min, c = region.max, b{c.x, a.y}, d{a.x, c.y};
-  for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) v.walls.push_back({-1, -1, p, q, 1.0});
+  planning::AddWalls(&v, {region.min, {region.max.x, region.min.y}, region.max, {region.min.x, region.max.y}}, true);
   return v;
 }
 
@@ -92,8 +91,7 @@ class NavigationPolicy : public AgentPolicy {
     blocked_.Update(state.view->frontiers);
     mapping::MapView view = WithRegionWalls(*state.view, region_);
     for (const auto& f : state.view->frontiers)
-      if (blocked_.Contains(f.id))
-        for (size_t i = 1; i < f.points.size(); ++i) view.walls.push_back({-1, -1, f.points[i - 1], f.points[i], 1.0});
+      if (blocked_.Contains(f.id)) planning::AddWalls(&view, f.points);
     const planning::VisibilityGraph graph(view, planning_, false);
     std::vector<planning::FrontierTarget> targets;
     for (const auto& t : planning::FrontierTargets(*state.view, planning_))
@@ -121,9 +119,8 @@ class NavigationPolicy : public AgentPolicy {
     const Vec2 at = step.pose.position();
     const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
     if (blocked >= 0) blocked_.GiveUp(blocked, state.view->frontiers, &at);
-    const double angle = rng.Uniform(-core::kPi, core::kPi);
     ++nudges_;
-    return motion.Nudge(agent, Vec2{std::cos(angle), std::sin(angle)} * state.step_length);
+    return NudgeRandomly(motion, agent, state.step_length, rng);
   }
 
   std::function<void(const std::map<int, double>&)> on_estimates;

@@ -97,9 +97,8 @@ sim::StepResult SearchPolicy::AfterStep(const LoopState& state, int agent, const
   if (stuck && found && dwell_.Count(c.frontier_id)) given_up_.GiveUp(c.frontier_id, state.view->frontiers);
   if (!stuck_.Record(agent, stuck)) return step;
   // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
-  const double angle = rng.Uniform(-core::kPi, core::kPi);
   ++nudges_;
-  return motion.Nudge(agent, Vec2{std::cos(angle), std::sin(angle)} * state.step_length);
+  return NudgeRandomly(motion, agent, state.step_length, rng);
 }
 
 }  // namespace toponav::experiments

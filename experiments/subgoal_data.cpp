@@ -23,10 +23,7 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& maze, const 
   o.mcmc_every = config.bench.mcmc_every;
   o.on_plan = [&](const LoopState& state, const std::vector<planning::FrontierTarget>& targets) {
     if (state.step % every != 0 || targets.empty()) return;
-    std::vector<const mapping::Frontier*> frontiers;
-    for (const auto& t : targets)
-      for (const auto& f : state.view->frontiers)
-        if (f.id == t.frontier_id) frontiers.push_back(&f);
+    const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(*state.view, targets);
     const core::Pose2 pose = state.poses[0];
     const planning::SubgoalGrid sg(*state.view, frontiers, pose.position(), maze.goal, config.lsp.cell, maze.bounds);
     if (sg.goal_known()) return;

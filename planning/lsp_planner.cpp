@@ -34,8 +34,7 @@ class OracleEstimator : public SubgoalEstimator {
 mapping::MapView MaskOtherFrontiers(const mapping::MapView& view, int keep) {
   mapping::MapView v = view;
   for (const auto& f : view.frontiers)
-    if (f.id != keep)
-      for (size_t i = 1; i < f.points.size(); ++i) v.walls.push_back({-1, -1, f.points[i - 1], f.points[i], 1.0});
+    if (f.id != keep) AddWalls(&v, f.points);
   return v;
 }
 
@@ -75,10 +74,7 @@ class LspPlanner : public Planner {
  private:
   // The frontier id that begins the best order, or -1 (the goal is known, or nothing to order).
   int ChooseSubgoal(const PlanningProblem& p) {
-    std::vector<const mapping::Frontier*> frontiers;
-    for (const auto& t : *p.targets)
-      for (const auto& f : p.view->frontiers)
-        if (f.id == t.frontier_id) frontiers.push_back(&f);
+    const std::vector<const mapping::Frontier*> frontiers = TargetFrontiers(*p.view, *p.targets);
     if (frontiers.empty()) return -1;
     const SubgoalGrid grid(*p.view, frontiers, p.agents[0], *p.goal, o_.cell, region_);
     if (grid.goal_known()) return -1;

@@ -288,6 +288,19 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
   return out;
 }
 
+void AddWalls(mapping::MapView* view, const std::vector<Vec2>& polyline, bool closed) {
+  for (size_t i = 1; i < polyline.size(); ++i) view->walls.push_back({-1, -1, polyline[i - 1], polyline[i], 1.0});
+  if (closed && polyline.size() > 2) view->walls.push_back({-1, -1, polyline.back(), polyline.front(), 1.0});
+}
+
+std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view, const std::vector<FrontierTarget>& targets) {
+  std::vector<const mapping::Frontier*> out;
+  for (const auto& t : targets)
+    for (const auto& f : view.frontiers)
+      if (f.id == t.frontier_id) out.push_back(&f);
+  return out;
+}
+
 FrontierChoice ChooseNearestFrontier(const VisibilityGraph& graph, const std::vector<FrontierTarget>& targets,
                                      const Vec2& agent) {
   FrontierChoice choice;

@@ -79,6 +79,13 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
 // vertices along it (a wall the map has not accepted yet).
 bool AlongVertexRow(const mapping::Frontier& frontier, const mapping::MapView& view, const PlannerOptions& options);
 
+// Adds the polyline's segments to 'view' as walls (no map vertices at their ends): what planners must not
+// cross beyond the map -- a region's edge, frontiers blocked or masked.  'closed': also last -> first.
+void AddWalls(mapping::MapView* view, const std::vector<core::Vec2>& polyline, bool closed = false);
+
+// The frontiers of 'view' the targets name, in the targets' order.
+std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view, const std::vector<FrontierTarget>& targets);
+
 // One agent's choice: the frontier it heads for and the path there.
 struct FrontierChoice {
   PlanStatus status = PlanStatus::kNothingToExplore;
