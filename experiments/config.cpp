@@ -10,8 +10,8 @@
 #include "core/error.h"
 #include "core/geometry.h"
 #include "core/rng.h"
-#include "experiments/navigation_trial.h"
 #include "experiments/internal/yaml_reader.h"
+#include "experiments/navigation_trial.h"
 
 namespace toponav::experiments {
 
@@ -89,8 +89,9 @@ namespace {
 void ValidateAcrossSections(const Config& c) {
   // A split must not cut a frontier into pieces the planner ignores (an opening would vanish).
   if (c.mapping.frontier_split_min_length < c.planning.frontier_min_length)
-    throw core::ConfigError(c.source, "mapping.frontier_split_min_length", std::to_string(c.mapping.frontier_split_min_length),
-                            "must be >= planning.frontier_min_length (" + std::to_string(c.planning.frontier_min_length) + ")");
+    throw core::ConfigError(
+        c.source, "mapping.frontier_split_min_length", std::to_string(c.mapping.frontier_split_min_length),
+        "must be >= planning.frontier_min_length (" + std::to_string(c.planning.frontier_min_length) + ")");
   // Paths keep the agent's body off map walls, and stay below the inflation radius so the graph's nodes
   // (inflation_radius from each vertex) keep room to connect.
   const double lo = c.motion.agent_radius + 0.25, hi = 0.9 * c.planning.inflation_radius;
@@ -102,7 +103,8 @@ void ValidateAcrossSections(const Config& c) {
     throw core::ConfigError(c.source, "bench.first_seed", std::to_string(c.bench.first_seed),
                             "first_seed + num_seeds must stay within [0, " + std::to_string(core::kMaxSeed) + "]");
   if (c.demo.seed > core::kMaxSeed)
-    throw core::ConfigError(c.source, "demo.seed", std::to_string(c.demo.seed), "must be in [0, " + std::to_string(core::kMaxSeed) + "]");
+    throw core::ConfigError(c.source, "demo.seed", std::to_string(c.demo.seed),
+                            "must be in [0, " + std::to_string(core::kMaxSeed) + "]");
   if (c.demo.kinds.empty()) throw core::ConfigError(c.source, "demo.kinds", "[]", "list at least one world kind");
   for (auto k : c.demo.kinds)
     if (k == core::WorldKind::kCustom)
@@ -135,6 +137,7 @@ void Validate(const Config& c) {
   InSection(c, "", [&] { core::CheckRanges(c.picture, PictureOptions::Fields(), "picture."); });
   InSection(c, "", [&] { core::CheckRanges(c.bench, BenchOptions::Fields(), "bench."); });
   InSection(c, "", [&] { c.datagen.Validate(); });
+  InSection(c, "", [&] { c.subgoal_data.Validate(); });
   InSection(c, "", [&] { c.train.Validate(); });
   ValidateAcrossSections(c);
 }
@@ -150,7 +153,8 @@ void ReadSection(YamlSection s, Options* o) {
 
 core::WorldKind ReadWorldKind(YamlSection& s, const std::string& key, const std::string& name) {
   const auto k = core::ParseWorldKind(name);
-  if (!k || *k == core::WorldKind::kCustom) s.Fail(key, name, "unknown world kind (labyrinth, office_park, guided_maze)");
+  if (!k || *k == core::WorldKind::kCustom)
+    s.Fail(key, name, "unknown world kind (labyrinth, office_park, guided_maze)");
   return *k;
 }
 
@@ -181,8 +185,10 @@ void ReadBench(YamlSection b, BenchOptions* bench) {
     r.kind = ReadWorldKind(row, "kind", kind);
     row.Read("agents", &r.agents, 1, 16);
     row.Read("planner", &r.planner);
-    if (!r.planner.empty() && !ParseGoalPlanner(r.planner)) row.Fail("planner", r.planner, "not a goal-directed planner (optimistic, oracle, lsp)");
-    if (!r.planner.empty() && r.agents != 1) row.Fail("agents", std::to_string(r.agents), "navigation trials have one agent");
+    if (!r.planner.empty() && !ParseGoalPlanner(r.planner))
+      row.Fail("planner", r.planner, "not a goal-directed planner (optimistic, oracle, lsp)");
+    if (!r.planner.empty() && r.agents != 1)
+      row.Fail("agents", std::to_string(r.agents), "navigation trials have one agent");
     row.Finish();
     bench->rows.push_back(r);
   }
@@ -212,6 +218,12 @@ void ReadDatagen(YamlSection d, DatagenOptions* o) {
   }
   d.ReadFields(o, DatagenOptions::Fields());
   d.Finish();
+}
+
+void ReadTrain(YamlSection t, learning::TrainOptions* o) {
+  t.Read("init_from", &o->init_from);
+  t.ReadFields(o, learning::TrainOptions::Fields());
+  t.Finish();
 }
 
 void ReadWorlds(YamlSection w, sim::WorldOptions* worlds) {
@@ -247,7 +259,8 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadBench(top.Section("bench"), &c.bench);
   ReadDemo(top.Section("demo"), &c.demo);
   ReadDatagen(top.Section("datagen"), &c.datagen);
-  ReadSection(top.Section("train"), &c.train);
+  ReadTrain(top.Section("train"), &c.train);
+  ReadSection(top.Section("subgoal_data"), &c.subgoal_data);
   top.Finish();
   Validate(c);
   return c;

@@ -9,6 +9,7 @@
 #include "core/world.h"
 #include "experiments/datagen.h"
 #include "experiments/sensor_factory.h"
+#include "experiments/subgoal_data_options.h"
 #include "learning/train_options.h"
 #include "mapping/mapping.h"
 #include "planning/lsp_planner.h"
@@ -106,6 +107,7 @@ struct Config {
   OpenWorldOptions open_world;
   DatagenOptions datagen;
   learning::TrainOptions train;
+  SubgoalDataOptions subgoal_data;
   PictureOptions picture;
   DemoJob demo;
   BenchOptions bench;

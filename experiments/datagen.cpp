@@ -45,34 +45,51 @@ core::Panorama WithLabels(core::Panorama pano, const sim::VertexLabelGrid& label
 nlohmann::json DatasetJson(const DatagenOptions& o, const sim::RenderOptions& render, const core::RangeBearingGrid& g) {
   nlohmann::json j;
   j["format"] = "toponav-vertex-dataset-1";
-  j["grid"] = {{"rows", g.rows}, {"cols", g.cols}, {"max_range", g.max_range},
+  j["grid"] = {{"rows", g.rows},
+               {"cols", g.cols},
+               {"max_range", g.max_range},
                {"row_range", "row k holds ranges nearest (k + 1) * max_range / rows"},
                {"col_bearing", "column j looks along bearing -pi + 2 pi j / cols, counter-clockwise from the heading"}};
-  j["labels_png"] = "one byte per cell, row-major (rows = range bins): 0 no vertex, 1 right gap, 2 corner, 3 left gap, 4 point";
-  j["image"] = {{"width", render.width}, {"height", render.height}, {"vertical_fov_deg", render.vertical_fov_deg},
+  j["labels_png"] =
+      "one byte per cell, row-major (rows = range bins): 0 no vertex, 1 right gap, 2 corner, 3 left gap, 4 point";
+  j["image"] = {{"width", render.width},
+                {"height", render.height},
+                {"vertical_fov_deg", render.vertical_fov_deg},
                 {"columns", "column j looks along bearing -pi + 2 pi j / width"}};
   std::vector<std::string> kinds;
   for (auto k : o.kinds) kinds.push_back(core::ToString(k));
   j["worlds"] = {{"kinds", kinds},
                  {"train_seeds", {o.train_first_seed, o.train_first_seed + o.train_num_seeds - 1}},
                  {"val_seeds", {o.val_first_seed, o.val_first_seed + o.val_num_seeds - 1}},
-                 {"samples_per_world", o.samples_per_world}, {"min_clearance", o.min_clearance}};
+                 {"samples_per_world", o.samples_per_world},
+                 {"min_clearance", o.min_clearance}};
   return j;
 }
 
 }  // namespace
 
+ExportWriter::ExportWriter(std::string out_dir, const std::string& index_header) : out_dir_(std::move(out_dir)) {
+  fs::create_directories(out_dir_);
+  index_ << index_header << "\n";
+}
+
+void ExportWriter::AddPicture(core::Panorama picture, std::string caption) {
+  sheet_.push_back(std::move(picture));
+  captions_.push_back(std::move(caption));
+}
+
+ExportSummary ExportWriter::Finish() {
+  WriteTextFile((fs::path(out_dir_) / "index.csv").string(), index_.str());
+  if (!sheet_.empty()) WriteContactSheet(sheet_, captions_, (fs::path(out_dir_) / "contact_sheet.png").string());
+  summary_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  return summary_;
+}
+
 ExportSummary ExportDataset(const DatagenOptions& o, const sim::WorldOptions& worlds, const sim::RenderOptions& render,
                             const core::RangeBearingGrid& grid, const std::string& out_dir, int max_samples) {
   o.Validate();
-  const auto t0 = std::chrono::steady_clock::now();
-  fs::create_directories(out_dir);
+  ExportWriter writer(out_dir, "sample,split,kind,world_seed,index,x,y,yaw,vertices,image,labels");
   WriteTextFile((fs::path(out_dir) / "dataset.json").string(), DatasetJson(o, render, grid).dump(1) + "\n");
-  std::ostringstream index;
-  index << "sample,split,kind,world_seed,index,x,y,yaw,vertices,image,labels\n";
-  std::vector<core::Panorama> sheet;
-  std::vector<std::string> captions;
-  ExportSummary summary;
   for (const Split split : {Split::kTrain, Split::kVal}) {
     const fs::path dir = fs::path(out_dir) / ToString(split);
     fs::create_directories(dir);
@@ -93,21 +110,17 @@ ExportSummary ExportDataset(const DatagenOptions& o, const sim::WorldOptions& wo
       const std::string labels = (fs::path(ToString(split)) / (std::string(name) + "_labels.png")).string();
       WritePanoramaPng(s.image, (fs::path(out_dir) / image).string());
       WriteGreyPng(s.labels.cells, grid.cols, grid.rows, (fs::path(out_dir) / labels).string());
-      index << ToString(split) << "/" << name << "," << ToString(split) << "," << core::ToString(id.kind) << "," << id.world_seed
-            << "," << id.index << "," << s.pose.x << "," << s.pose.y << "," << s.pose.yaw << "," << s.labels.num_vertices()
-            << "," << image << "," << labels << "\n";
-      if (sheet.size() < 6 && id.index == 0) {
-        sheet.push_back(WithLabels(s.image, s.labels));
-        captions.push_back(std::string(ToString(split)) + " " + core::ToString(id.kind) + " seed " +
-                           std::to_string(id.world_seed) + ": " + std::to_string(s.labels.num_vertices()) + " vertices");
-      }
-      ++summary.samples;
+      writer.index() << ToString(split) << "/" << name << "," << ToString(split) << "," << core::ToString(id.kind)
+                     << "," << id.world_seed << "," << id.index << "," << s.pose.x << "," << s.pose.y << ","
+                     << s.pose.yaw << "," << s.labels.num_vertices() << "," << image << "," << labels << "\n";
+      if (writer.WantsPicture() && id.index == 0)
+        writer.AddPicture(WithLabels(s.image, s.labels), std::string(ToString(split)) + " " + core::ToString(id.kind) +
+                                                             " seed " + std::to_string(id.world_seed) + ": " +
+                                                             std::to_string(s.labels.num_vertices()) + " vertices");
+      writer.CountSample();
     }
   }
-  WriteTextFile((fs::path(out_dir) / "index.csv").string(), index.str());
-  if (!sheet.empty()) WriteContactSheet(sheet, captions, (fs::path(out_dir) / "contact_sheet.png").string());
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return summary;
+  return writer.Finish();
 }
 
 }  // namespace toponav::experiments

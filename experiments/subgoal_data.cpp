@@ -3,6 +3,8 @@
 #include "core/error.h"
 #include "experiments/navigation_trial.h"
 #include "sim/raycast.h"
+#include "sim/render.h"
+#include "sim/worlds.h"
 
 namespace toponav::experiments {
 
@@ -29,8 +31,11 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& maze, const 
     if (sg.goal_known()) return;
     const std::vector<planning::SubgoalProperties> p = planning::TrueSubgoalProperties(sg, truth, sg.Distances());
     const core::Ring seen = rays.VisibilityPolygon(pose.position());
-    const auto visible = [&](const core::Vec2& q) { return core::Contains(seen, q) || core::NearRing(q, seen, kSeenMargin); };
-    SubgoalSample s{maze.seed, state.step, pose, maze.goal, 0, planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
+    const auto visible = [&](const core::Vec2& q) {
+      return core::Contains(seen, q) || core::NearRing(q, seen, kSeenMargin);
+    };
+    SubgoalSample s{maze.seed, state.step, pose,
+                    maze.goal, 0,          planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
     for (size_t f = 0; f < frontiers.size(); ++f)
       for (int c : sg.cells(f))
         if (visible(sg.raster().Center(c))) {
@@ -40,6 +45,34 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& maze, const 
     if (s.frontiers > 0) out.push_back(std::move(s));
   };
   RunNavigationTrial(maze, config, o, seed);
+  return out;
+}
+
+std::vector<SubgoalExample> MakeSubgoalExamples(const Config& config, sim::Split split,
+                                                const std::function<void(int, int, size_t)>& progress) {
+  const SubgoalDataOptions& o = config.subgoal_data;
+  o.Validate();
+  const int first = split == sim::Split::kTrain ? o.train_first_seed : o.val_first_seed;
+  const int count = split == sim::Split::kTrain ? o.train_num_seeds : o.val_num_seeds;
+  const core::RangeBearingGrid vertex_grid, subgoal_grid{64, 256, 100.0};
+  std::vector<SubgoalExample> out;
+  for (int k = 0; k < count; ++k) {
+    const uint64_t seed = uint64_t(first + k);
+    const core::World maze = sim::GenerateWorld(core::WorldKind::kGuidedMaze, config.worlds, seed);
+    const sim::Renderer renderer(maze, config.render);
+    const sim::RayCaster rays(maze);
+    for (SubgoalSample& s : CollectSubgoalSamples(maze, config, seed, o.every, subgoal_grid)) {
+      SubgoalExample e{seed,
+                       s.step,
+                       s.pose,
+                       renderer.Render(s.pose),
+                       sim::RasterizeVertexLabels(rays.VisibleVertices(s.pose, vertex_grid.max_range), vertex_grid),
+                       core::GoalInAgentFrame(s.pose, s.goal),
+                       std::move(s.labels)};
+      out.push_back(std::move(e));
+    }
+    if (progress) progress(k + 1, count, out.size());
+  }
   return out;
 }
 

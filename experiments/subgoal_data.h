@@ -5,11 +5,14 @@
 // rasterized on the range-bearing grid where the agent sees them.  The panorama and the vertex labels of a
 // sample are a pure function of the world and the pose (rendered when needed).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/world.h"
 #include "experiments/config.h"
 #include "planning/subgoal_grid.h"
+#include "sim/training_data.h"
+#include "sim/vertex_labels.h"
 
 namespace toponav::experiments {
 
@@ -26,5 +29,23 @@ struct SubgoalSample {
 // cell in view give none.  Uses config.lsp (raster cell, clearance) and config.bench.max_steps.
 std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& maze, const Config& config, uint64_t seed,
                                                  int every, const core::RangeBearingGrid& grid = {});
+
+// A training example of the subgoal network: the panorama at a sample's pose, its vertex labels (32x128), the
+// goal in the agent's frame and the subgoal labels (64x256).
+struct SubgoalExample {
+  uint64_t world_seed = 0;
+  int step = 0;
+  core::Pose2 pose;
+  core::Panorama image;
+  sim::VertexLabelGrid labels;
+  core::Vec2 goal;
+  core::SubgoalLabelGrid subgoal;
+};
+
+// The examples of a split's guided mazes (config.subgoal_data): one optimistic run through each (its seed the
+// maze's), a sample every config.subgoal_data.every steps.  'progress' is told after each maze (mazes done, of
+// how many, examples so far).
+std::vector<SubgoalExample> MakeSubgoalExamples(const Config& config, sim::Split split,
+                                                const std::function<void(int, int, size_t)>& progress = nullptr);
 
 }  // namespace toponav::experiments

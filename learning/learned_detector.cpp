@@ -1,21 +1,48 @@
 #include "learning/learned_detector.h"
 
+
+#include <cmath>
+
 #include "learning/vertex_model.h"
 
 namespace toponav::learning {
 
 namespace {
 
+// The subgoal outputs as the observation's cell grid (channels "ps" a probability, "delta_success",
+// "exploration").
+core::CellGrid SubgoalCells(const SubgoalOutput& s) {
+  core::CellGrid c;
+  c.rows = s.grid.rows;
+  c.cols = s.grid.cols;
+  c.max_range = s.grid.max_range;
+  c.channels = {"ps", "delta_success", "exploration"};
+  c.values.resize(s.ps.size() * 3);
+  for (size_t i = 0; i < s.ps.size(); ++i) {
+    c.values[3 * i] = s.ps[i];
+    c.values[3 * i + 1] = s.delta_success[i];
+    c.values[3 * i + 2] = s.exploration[i];
+  }
+  return c;
+}
+
 class LearnedDetector : public core::VertexDetectorInterface {
  public:
   LearnedDetector(VertexModel model, const DecodeOptions& decode) : model_(std::move(model)), decode_(decode) {}
 
   core::Observation Detect(const core::Panorama& image, const core::DetectionContext& context) override {
-    const GridOutput out = model_.Predict(image);
     core::Observation z;
     z.pose = context.pose;
     z.agent = context.agent;
+    if (!model_.options().subgoal || !context.goal) {
+      const GridOutput out = model_.Predict(image);
+      z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
+      return z;
+    }
+    const core::Vec2 g = *context.goal;
+    const auto [out, subgoal] = model_.PredictWithGoal(image, {core::Norm(g), std::atan2(g.y, g.x)});
     z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
+    z.cells = SubgoalCells(subgoal);
     return z;
   }
 

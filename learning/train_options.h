@@ -2,6 +2,7 @@
 // The options of `toponav train` (YAML section `train:`), header-only so the config reader can hold them
 // without linking the learning layer.
 #include <cmath>
+#include <string>
 
 #include "core/option_fields.h"
 
@@ -19,6 +20,10 @@ struct TrainOptions {
   int threads = 2;              // CPU threads (0: LibTorch's default)
   bool cuda = false;            // use the GPU if this LibTorch has one
   int seed = 0;                 // initial weights and batch order
+  bool subgoal = false;      // train the LSP extension (goal input, subgoal outputs) on subgoal examples
+  std::string init_from;     // a model file whose weights start a fresh run where names and shapes match
+                             // (a vertex model starts a subgoal one: all but the goal's and the finer
+                             // block's weights); empty: random weights
   static const core::OptionFields<TrainOptions>& Fields() {
     using O = TrainOptions;
     static const core::OptionFields<O> fields{
@@ -32,6 +37,7 @@ struct TrainOptions {
         {"threads", &O::threads, 0, 256},
         {"cuda", &O::cuda},
         {"seed", &O::seed, 0, 1000000000},
+        {"subgoal", &O::subgoal},
     };
     return fields;
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/geometry.h"
 #include "core/rng.h"
 #include "learning/learning.h"
 
@@ -19,41 +21,63 @@ using nlohmann::json;
 
 namespace {
 
-struct Example {
-  core::Panorama image;
-  sim::VertexLabelGrid labels;
-};
+json DataJson(const sim::DatagenOptions& d);
 
-std::vector<Example> RenderSplit(const sim::DatagenOptions& data, sim::Split split, const sim::WorldOptions& worlds,
-                                 const sim::RenderOptions& render) {
-  const core::RangeBearingGrid grid;
-  std::vector<Example> out;
-  std::unique_ptr<sim::WorldSampler> sampler;
-  sim::SampleId world{};
-  for (const auto& id : sim::ListSamples(data, split)) {
-    if (!sampler || id.kind != world.kind || id.world_seed != world.world_seed) {
-      sampler = std::make_unique<sim::WorldSampler>(id.kind, id.world_seed, worlds, render, grid, data.min_clearance);
-      world = id;
-    }
-    sim::Sample s = sampler->Make(id);
-    out.push_back({std::move(s.image), std::move(s.labels)});
-  }
-  return out;
+// Rolls a row-major rows x cols grid of values by 'shift' columns.
+template <class T>
+void RollColumns(const std::vector<T>& in, int rows, int cols, int shift, std::vector<T>* out) {
+  for (int row = 0; row < rows; ++row)
+    for (int c = 0; c < cols; ++c)
+      (*out)[size_t(row) * size_t(cols) + size_t((c + shift) % cols)] = in[size_t(row) * size_t(cols) + size_t(c)];
 }
 
-// The example turned by 'cols' label columns (4 image columns each: bearing stays exact).
-Example Rolled(const Example& e, int cols) {
-  Example r = e;
-  const int w = e.image.width, scale = w / e.labels.grid.cols, shift = cols * scale;
+}  // namespace
+
+TrainingSet RenderVertexExamples(const sim::DatagenOptions& data, const sim::WorldOptions& worlds,
+                                 const sim::RenderOptions& render) {
+  data.Validate();
+  const core::RangeBearingGrid grid;
+  TrainingSet set;
+  for (const sim::Split split : {sim::Split::kTrain, sim::Split::kVal}) {
+    std::unique_ptr<sim::WorldSampler> sampler;
+    sim::SampleId world{};
+    for (const auto& id : sim::ListSamples(data, split)) {
+      if (!sampler || id.kind != world.kind || id.world_seed != world.world_seed) {
+        sampler = std::make_unique<sim::WorldSampler>(id.kind, id.world_seed, worlds, render, grid, data.min_clearance);
+        world = id;
+      }
+      sim::Sample s = sampler->Make(id);
+      (split == sim::Split::kTrain ? set.train : set.val)
+          .push_back({std::move(s.image), std::move(s.labels), {}, std::nullopt});
+    }
+  }
+  set.identity_json = DataJson(data).dump();
+  return set;
+}
+
+TrainingExample Rolled(const TrainingExample& e, int cols) {
+  TrainingExample r = e;
+  const auto& g = e.labels.grid;
+  const int w = e.image.width, scale = w / g.cols;
   for (int y = 0; y < e.image.height; ++y)
     for (int x = 0; x < w; ++x)
       for (int k = 0; k < 3; ++k)
-        r.image.rgb[3 * (size_t(y) * w + size_t((x + shift) % w)) + size_t(k)] = e.image.rgb[3 * (size_t(y) * w + size_t(x)) + size_t(k)];
-  const auto& g = e.labels.grid;
-  for (int row = 0; row < g.rows; ++row)
-    for (int c = 0; c < g.cols; ++c) r.labels.cells[g.Index(row, (c + cols) % g.cols)] = e.labels.cells[g.Index(row, c)];
+        r.image.rgb[3 * (size_t(y) * w + size_t((x + cols * scale) % w)) + size_t(k)] =
+            e.image.rgb[3 * (size_t(y) * w + size_t(x)) + size_t(k)];
+  RollColumns(e.labels.cells, g.rows, g.cols, cols, &r.labels.cells);
+  r.goal.bearing = core::WrapAngle(e.goal.bearing + cols * 2.0 * M_PI / g.cols);
+  if (e.subgoal) {
+    const auto& sg = e.subgoal->grid;
+    const int shift = cols * sg.cols / g.cols;
+    RollColumns(e.subgoal->mask, sg.rows, sg.cols, shift, &r.subgoal->mask);
+    RollColumns(e.subgoal->ps, sg.rows, sg.cols, shift, &r.subgoal->ps);
+    RollColumns(e.subgoal->delta_success, sg.rows, sg.cols, shift, &r.subgoal->delta_success);
+    RollColumns(e.subgoal->exploration, sg.rows, sg.cols, shift, &r.subgoal->exploration);
+  }
   return r;
 }
+
+namespace {
 
 // The training examples of step 'step': epochs are shuffled orders of all examples (a pure function of the
 // seed and the epoch), each example rolled by its own random amount.
@@ -87,12 +111,16 @@ class BatchOrder {
   std::map<uint64_t, std::vector<size_t>> orders_;
 };
 
-double ValidationLoss(const VertexModel& model, const std::vector<Example>& val, int batch_size) {
+LabelledImage Labelled(const TrainingExample& e) {
+  return {&e.image, &e.labels, e.goal, e.subgoal ? &*e.subgoal : nullptr};
+}
+
+double ValidationLoss(const VertexModel& model, const std::vector<TrainingExample>& val, int batch_size) {
   double sum = 0;
   int batches = 0;
   for (size_t i = 0; i < val.size(); i += size_t(batch_size)) {
     std::vector<LabelledImage> batch;
-    for (size_t k = i; k < std::min(val.size(), i + size_t(batch_size)); ++k) batch.push_back({&val[k].image, &val[k].labels, {}, nullptr});
+    for (size_t k = i; k < std::min(val.size(), i + size_t(batch_size)); ++k) batch.push_back(Labelled(val[k]));
     sum += model.Loss(batch);
     ++batches;
   }
@@ -102,15 +130,18 @@ double ValidationLoss(const VertexModel& model, const std::vector<Example>& val,
 // What makes two runs the same run (the step count, the decay and the validation cadence may change: a run can
 // be extended).
 json OptionsJson(const TrainOptions& o) {
-  return {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate}, {"seed", o.seed}};
+  return {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate},
+          {"seed", o.seed},   {"subgoal", o.subgoal},       {"init_from", o.init_from}};
 }
 
 json DataJson(const sim::DatagenOptions& d) {
   std::vector<std::string> kinds;
   for (auto k : d.kinds) kinds.push_back(core::ToString(k));
-  return {{"kinds", kinds}, {"train_seeds", {d.train_first_seed, d.train_first_seed + d.train_num_seeds - 1}},
+  return {{"kinds", kinds},
+          {"train_seeds", {d.train_first_seed, d.train_first_seed + d.train_num_seeds - 1}},
           {"val_seeds", {d.val_first_seed, d.val_first_seed + d.val_num_seeds - 1}},
-          {"samples_per_world", d.samples_per_world}, {"min_clearance", d.min_clearance}};
+          {"samples_per_world", d.samples_per_world},
+          {"min_clearance", d.min_clearance}};
 }
 
 void WriteJsonAtomically(const fs::path& path, const json& j) {
@@ -146,15 +177,16 @@ RunState Resume(const fs::path& dir, const json& identity, VertexModel* model, c
     throw core::DataError(state_file.string(), "unreadable training state: use --fresh to start over");
   }
   if (state.value("identity", json()) != identity)
-    throw core::DataError(state_file.string(), "the run in this directory had other options or data: use --fresh or another --out");
+    throw core::DataError(state_file.string(),
+                          "the run in this directory had other options or data: use --fresh or another --out");
   *model = VertexModel::Load(checkpoint.string(), device);
   return {state.at("step").get<int>(), state.at("best_step").get<int>(), state.at("best_val_loss").get<double>()};
 }
 
 // After a validation: the best model so far (with its data and metrics in its notes), the checkpoint and
 // the state a resumed run starts from.
-void Checkpoint(const fs::path& dir, const VertexModel& model, const json& identity, json notes, int step, double val_loss,
-                RunState* s) {
+void Checkpoint(const fs::path& dir, const VertexModel& model, const json& identity, json notes, int step,
+                double val_loss, RunState* s) {
   if (s->best_val_loss < 0 || val_loss < s->best_val_loss) {
     s->best_val_loss = val_loss;
     s->best_step = step;
@@ -164,30 +196,48 @@ void Checkpoint(const fs::path& dir, const VertexModel& model, const json& ident
     model.Save((dir / "model.pt").string(), notes.dump());
   }
   model.Save((dir / "checkpoint.pt").string());
-  WriteJsonAtomically(dir / "train_state.json",
-                      {{"identity", identity}, {"step", step}, {"best_step", s->best_step}, {"best_val_loss", s->best_val_loss}});
+  WriteJsonAtomically(
+      dir / "train_state.json",
+      {{"identity", identity}, {"step", step}, {"best_step", s->best_step}, {"best_val_loss", s->best_val_loss}});
 }
 
 }  // namespace
 
-TrainResult Train(const sim::DatagenOptions& data, const sim::WorldOptions& worlds, const sim::RenderOptions& render,
-                  const TrainOptions& o, const std::string& out_dir, bool fresh,
+namespace {
+
+// A fresh model for the options: random weights, or those of options.init_from where they fit.
+VertexModel InitialModel(const TrainOptions& o, const std::string& device) {
+  VertexNetOptions net;
+  net.width = o.width;
+  net.subgoal = o.subgoal;
+  VertexModel model(net, uint64_t(o.seed), device);
+  if (!o.init_from.empty() && model.InitFrom(VertexModel::Load(o.init_from, device)) == 0)
+    throw core::DataError(o.init_from, "none of its weights fit the network to train (another width?)");
+  return model;
+}
+
+}  // namespace
+
+TrainResult Train(const TrainingSet& data, const TrainOptions& o, const std::string& out_dir, bool fresh,
                   const std::function<void(const TrainProgress&)>& report, int report_every) {
   o.Validate();
-  data.Validate();
   const auto t0 = std::chrono::steady_clock::now();
   const BackendInfo backend = SelectBackend(o.cuda, o.threads);
   const fs::path dir(out_dir);
   fs::create_directories(dir);
   if (fresh)
     for (const char* f : {"train_state.json", "checkpoint.pt", "model.pt", "train_log.csv"}) fs::remove(dir / f);
-  const std::vector<Example> train = RenderSplit(data, sim::Split::kTrain, worlds, render);
-  const std::vector<Example> val = RenderSplit(data, sim::Split::kVal, worlds, render);
-  if (train.empty() || val.empty()) throw core::ConfigError("<options>", "datagen", "", "training needs training and validation samples");
-  const json identity = {{"train", OptionsJson(o)}, {"data", DataJson(data)}};
-  VertexNetOptions net;
-  net.width = o.width;
-  VertexModel model(net, uint64_t(o.seed), backend.device);
+  const std::vector<TrainingExample>& train = data.train;
+  const std::vector<TrainingExample>& val = data.val;
+  if (train.empty() || val.empty())
+    throw core::ConfigError("<options>", "datagen", "", "training needs training and validation samples");
+  if (o.subgoal)
+    for (const auto* split : {&train, &val})
+      for (const auto& e : *split)
+        if (!e.subgoal)
+          throw core::ConfigError("<options>", "train.subgoal", "true", "every example needs subgoal labels");
+  const json identity = {{"train", OptionsJson(o)}, {"data", json::parse(data.identity_json)}};
+  VertexModel model = InitialModel(o, backend.device);
   RunState s = Resume(dir, identity, &model, backend.device);
   TrainResult r;
   r.resumed_from = s.step;
@@ -199,10 +249,10 @@ TrainResult Train(const sim::DatagenOptions& data, const sim::WorldOptions& worl
   double loss_sum = 0;
   int loss_count = 0;
   for (int step = s.step; step < o.steps; ++step) {
-    std::vector<Example> rolled;
+    std::vector<TrainingExample> rolled;
     for (const auto& [i, cols] : order.Batch(step)) rolled.push_back(Rolled(train[i], cols));
     std::vector<LabelledImage> batch;
-    for (const auto& e : rolled) batch.push_back({&e.image, &e.labels, {}, nullptr});
+    for (const auto& e : rolled) batch.push_back(Labelled(e));
     loss_sum += model.TrainStep(batch, o.LearningRate(step));
     ++loss_count;
     const bool validate = (step + 1) % o.validate_every == 0 || step + 1 == o.steps;
@@ -232,6 +282,13 @@ TrainResult Train(const sim::DatagenOptions& data, const sim::WorldOptions& worl
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.model_path = (dir / "model.pt").string();
   return r;
+}
+
+TrainResult Train(const sim::DatagenOptions& data, const sim::WorldOptions& worlds, const sim::RenderOptions& render,
+                  const TrainOptions& options, const std::string& out_dir, bool fresh,
+                  const std::function<void(const TrainProgress&)>& report, int report_every) {
+  options.Validate();
+  return Train(RenderVertexExamples(data, worlds, render), options, out_dir, fresh, report, report_every);
 }
 
 }  // namespace toponav::learning

@@ -3,7 +3,9 @@
 #include <torch/torch.h>
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "core/error.h"
 #include "learning/internal/vertex_net.h"
@@ -20,8 +22,8 @@ constexpr const char* kMetadataKey = "toponav_metadata";
 
 torch::Tensor ImageTensor(const core::Panorama& p) {
   if (p.width != 512 || p.height != 128 || p.rgb.size() != size_t(3 * 512 * 128))
-    throw core::DataError("<panorama>", "the vertex network takes 128x512 RGB panoramas, got " + std::to_string(p.height) +
-                                             "x" + std::to_string(p.width));
+    throw core::DataError("<panorama>", "the vertex network takes 128x512 RGB panoramas, got " +
+                                            std::to_string(p.height) + "x" + std::to_string(p.width));
   auto t = torch::from_blob(const_cast<uint8_t*>(p.rgb.data()), {p.height, p.width, 3}, torch::kUInt8);
   return t.permute({2, 0, 1}).to(torch::kFloat32).div(255.0);
 }
@@ -33,16 +35,21 @@ torch::Tensor LabelTensor(const sim::VertexLabelGrid& g) {
 
 // [4, 64, 256]: mask, Ps, success cost, exploration cost.
 torch::Tensor SubgoalTensor(const core::SubgoalLabelGrid& g) {
-  TOPONAV_CHECK(g.grid.rows == 64 && g.grid.cols == 256 && g.mask.size() == g.grid.size() && g.ps.size() == g.grid.size() &&
-                    g.delta_success.size() == g.grid.size() && g.exploration.size() == g.grid.size(),
+  TOPONAV_CHECK(g.grid.rows == 64 && g.grid.cols == 256 && g.mask.size() == g.grid.size() &&
+                    g.ps.size() == g.grid.size() && g.delta_success.size() == g.grid.size() &&
+                    g.exploration.size() == g.grid.size(),
                 "subgoal labels must be 64x256");
-  const auto f = [](const std::vector<float>& v) { return torch::from_blob(const_cast<float*>(v.data()), {64, 256}, torch::kFloat32); };
+  const auto f = [](const std::vector<float>& v) {
+    return torch::from_blob(const_cast<float*>(v.data()), {64, 256}, torch::kFloat32);
+  };
   const auto mask = torch::from_blob(const_cast<uint8_t*>(g.mask.data()), {64, 256}, torch::kUInt8).to(torch::kFloat32);
   return torch::stack({mask, f(g.ps), f(g.delta_success), f(g.exploration)});
 }
 
 // Sum of v over the mask's cells / (the mask's count + 1) (lsp.md §2.7: a masked mean that is 0 when empty).
-torch::Tensor MaskedMean(const torch::Tensor& v, const torch::Tensor& mask) { return (v * mask).sum() / (mask.sum() + 1.0); }
+torch::Tensor MaskedMean(const torch::Tensor& v, const torch::Tensor& mask) {
+  return (v * mask).sum() / (mask.sum() + 1.0);
+}
 
 }  // namespace
 
@@ -50,8 +57,8 @@ struct VertexModel::Impl {
   VertexNetOptions options;
   std::string notes;
   torch::Device device{torch::kCPU};
-  internal::VertexNet net{nullptr};     // the vertex network, or ...
-  internal::SubgoalNet sub{nullptr};    // ... its LSP extension (options.subgoal)
+  internal::VertexNet net{nullptr};   // the vertex network, or ...
+  internal::SubgoalNet sub{nullptr};  // ... its LSP extension (options.subgoal)
   std::unique_ptr<torch::optim::Adam> adam;
 
   torch::nn::Module& module() { return options.subgoal ? static_cast<torch::nn::Module&>(*sub) : *net; }
@@ -86,9 +93,10 @@ struct VertexModel::Impl {
 
   torch::Tensor VertexLoss(const torch::Tensor& logits, const torch::Tensor& cells) const {
     const auto is_vertex = cells.gt(0).to(torch::kFloat32);
-    const auto bce = F::binary_cross_entropy_with_logits(
-        logits.select(1, 0), is_vertex,
-        F::BinaryCrossEntropyWithLogitsFuncOptions().pos_weight(torch::full({1}, options.positive_weight, logits.options())));
+    const auto bce =
+        F::binary_cross_entropy_with_logits(logits.select(1, 0), is_vertex,
+                                            F::BinaryCrossEntropyWithLogitsFuncOptions().pos_weight(
+                                                torch::full({1}, options.positive_weight, logits.options())));
     const auto log_p = F::log_softmax(logits.slice(1, 1, 5), 1);
     const auto target = (cells - 1).clamp_min(0);
     const auto nll = -log_p.gather(1, target.unsqueeze(1)).squeeze(1);
@@ -98,7 +106,8 @@ struct VertexModel::Impl {
   // out [B, 3, 64, 256] (Ps logit, success cost, exploration cost); labels [B, 4, 64, 256] (mask, Ps, costs).
   static torch::Tensor SubgoalLoss(const torch::Tensor& out, const torch::Tensor& labels) {
     const auto mask = labels.select(1, 0), y = labels.select(1, 1);
-    const auto bce = F::binary_cross_entropy_with_logits(out.select(1, 0), y, F::BinaryCrossEntropyWithLogitsFuncOptions().reduction(torch::kNone));
+    const auto bce = F::binary_cross_entropy_with_logits(
+        out.select(1, 0), y, F::BinaryCrossEntropyWithLogitsFuncOptions().reduction(torch::kNone));
     const auto ds = (out.select(1, 1) - labels.select(1, 2)).pow(2) / 1e4;
     const auto re = (out.select(1, 2) - labels.select(1, 3)).pow(2) / 4e4;
     return MaskedMean(bce, mask) + MaskedMean(ds, mask * y) + MaskedMean(re, mask * (1 - y));
@@ -112,8 +121,10 @@ VertexModel::VertexModel(const VertexNetOptions& options, uint64_t seed, const s
   torch::manual_seed(seed);
   impl_->options = options;
   impl_->device = torch::Device(device);
-  if (options.subgoal) impl_->sub = internal::SubgoalNet(options.width);
-  else impl_->net = internal::VertexNet(options.width);
+  if (options.subgoal)
+    impl_->sub = internal::SubgoalNet(options.width);
+  else
+    impl_->net = internal::VertexNet(options.width);
   impl_->module().to(impl_->device);
 }
 VertexModel::~VertexModel() = default;
@@ -136,7 +147,8 @@ GridOutput VertexGrid(const torch::Tensor& logits) {  // [5, 32, 128]
 
 }  // namespace
 
-std::pair<GridOutput, SubgoalOutput> VertexModel::PredictWithGoal(const core::Panorama& image, const GoalInView& goal) const {
+std::pair<GridOutput, SubgoalOutput> VertexModel::PredictWithGoal(const core::Panorama& image,
+                                                                  const GoalInView& goal) const {
   TOPONAV_CHECK(impl_->options.subgoal, "PredictWithGoal on a model without the subgoal extension");
   torch::NoGradGuard no_grad;
   impl_->module().eval();
@@ -164,13 +176,71 @@ double VertexModel::Loss(const std::vector<LabelledImage>& batch) const {
 
 double VertexModel::TrainStep(const std::vector<LabelledImage>& batch, double lr) {
   impl_->module().train();
-  if (!impl_->adam) impl_->adam = std::make_unique<torch::optim::Adam>(impl_->module().parameters(), torch::optim::AdamOptions(lr));
-  for (auto& group : impl_->adam->param_groups()) static_cast<torch::optim::AdamOptions&>(group.options()).lr(lr);  // keeps the moments
+  if (!impl_->adam)
+    impl_->adam = std::make_unique<torch::optim::Adam>(impl_->module().parameters(), torch::optim::AdamOptions(lr));
+  for (auto& group : impl_->adam->param_groups())
+    static_cast<torch::optim::AdamOptions&>(group.options()).lr(lr);  // keeps the moments
   const auto loss = impl_->BatchLoss(batch);
   impl_->adam->zero_grad();
   loss.backward();
   impl_->adam->step();
   return loss.item<double>();
+}
+
+namespace {
+
+constexpr int kModulesPerEncoderBlock = 7;  // conv, BatchNorm, LeakyReLU twice, max-pool
+
+// A tensor's name in the vertex network's terms (a subgoal network's encoder is split in two at block 3).
+std::string CanonicalName(const std::string& name) {
+  const auto rest = [&](size_t n) { return name.substr(n); };
+  if (name.rfind("vertex_head.", 0) == 0) return "head." + rest(12);
+  if (name.rfind("encoder_a.", 0) == 0) return "encoder." + rest(10);
+  if (name.rfind("encoder_b.", 0) == 0) {
+    const size_t dot = name.find('.', 10);
+    return "encoder." + std::to_string(std::stoi(name.substr(10, dot - 10)) + 2 * kModulesPerEncoderBlock) +
+           name.substr(dot);
+  }
+  return name;
+}
+
+std::map<std::string, torch::Tensor> CanonicalTensors(torch::nn::Module& m) {
+  std::map<std::string, torch::Tensor> out;
+  for (const auto& t : m.named_parameters()) out[CanonicalName(t.key())] = t.value();
+  for (const auto& t : m.named_buffers()) out[CanonicalName(t.key())] = t.value();
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// How 'src' fits 'to': 2 the same shape, 1 a convolution's input channels plus the goal's 2, 0 not at all.
+int Fit(const torch::Tensor& src, const torch::Tensor& to) {
+  if (src.sizes() == to.sizes()) return 2;
+  const bool goal_channels = src.dim() == 4 && to.dim() == 4 && to.size(0) == src.size(0) &&
+                             to.size(1) == src.size(1) + 2 && to.size(2) == src.size(2) && to.size(3) == src.size(3);
+  return goal_channels ? 1 : 0;
+}
+
+}  // namespace
+
+int VertexModel::InitFrom(const VertexModel& source) {
+  torch::NoGradGuard no_grad;
+  const auto from = CanonicalTensors(source.impl_->module());
+  const auto into = CanonicalTensors(impl_->module());
+  for (const auto& [name, to] : into)
+    if (from.count(name) && Fit(from.at(name), to) == 0) return 0;  // another architecture: all or nothing
+  int copied = 0;
+  for (const auto& [name, to] : into) {
+    if (!from.count(name)) continue;
+    const torch::Tensor& src = from.at(name);
+    torch::Tensor target =
+        Fit(src, to) == 2 ? to : to.slice(1, 0, src.size(1));  // image channels first, the goal's after
+    target.copy_(src.to(to.device()));
+    ++copied;
+  }
+  return copied;
 }
 
 const VertexNetOptions& VertexModel::options() const { return impl_->options; }
@@ -238,7 +308,9 @@ VertexModel VertexModel::Load(const std::string& path, const std::string& device
   } catch (const c10::Error&) {
     fits = false;
   }
-  if (!fits) throw core::DataError(path, "its weights do not fit the architecture it declares (width " + std::to_string(o.width) + ")");
+  if (!fits)
+    throw core::DataError(
+        path, "its weights do not fit the architecture it declares (width " + std::to_string(o.width) + ")");
   net.to(model.impl_->device);
   model.impl_->notes = meta.value("notes", "");
   return model;

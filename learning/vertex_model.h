@@ -77,6 +77,12 @@ class VertexModel {
   // One Adam step on a batch (learning rate 'lr'); returns the batch's loss before the step.
   double TrainStep(const std::vector<LabelledImage>& batch, double lr);
 
+  // Copies the weights of 'source' (another width-compatible model, with or without the extension) where a
+  // tensor of the same role has the same shape; the third encoder block's first convolution of a subgoal
+  // model takes a vertex model's weights for its image channels (its goal channels keep theirs).  All or
+  // nothing: returns the number of tensors copied, 0 (and nothing copied) if a shared tensor does not fit.
+  int InitFrom(const VertexModel& source);
+
   // Saves weights and metadata (format, options, free-form 'notes' such as the training data and metrics).
   void Save(const std::string& path, const std::string& notes = "") const;
   // Loads a model saved by Save.  A missing, truncated or foreign file, or one whose weights do not fit its

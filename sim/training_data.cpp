@@ -11,27 +11,29 @@ namespace toponav::sim {
 const core::OptionFields<DatagenOptions>& DatagenOptions::Fields() {
   using O = DatagenOptions;
   static const core::OptionFields<O> fields{
-      {"train_first_seed", &O::train_first_seed, 0, 9999},
-      {"train_num_seeds", &O::train_num_seeds, 0, 10000},
-      {"val_first_seed", &O::val_first_seed, 0, 9999},
-      {"val_num_seeds", &O::val_num_seeds, 0, 10000},
-      {"samples_per_world", &O::samples_per_world, 1, 100000},
-      {"min_clearance", &O::min_clearance, 0.0, 50.0},
+      {"train_first_seed", &O::train_first_seed, 0, 9999},     {"train_num_seeds", &O::train_num_seeds, 0, 10000},
+      {"val_first_seed", &O::val_first_seed, 0, 9999},         {"val_num_seeds", &O::val_num_seeds, 0, 10000},
+      {"samples_per_world", &O::samples_per_world, 1, 100000}, {"min_clearance", &O::min_clearance, 0.0, 50.0},
   };
   return fields;
 }
 
-void DatagenOptions::Validate() const {
-  core::CheckRanges(*this, Fields(), "datagen.");
-  auto fail = [](const char* key, int v, const std::string& why) {
-    throw core::ConfigError("<options>", key, std::to_string(v), why);
+void CheckTrainingSeeds(const std::string& prefix, int train_first, int train_num, int val_first, int val_num) {
+  auto fail = [&](const char* key, int v, const std::string& why) {
+    throw core::ConfigError("<options>", prefix + key, std::to_string(v), why);
   };
   // Tuning data only: benchmark worlds (seeds from 10000) are never trained on.
-  if (train_first_seed + train_num_seeds > 10000) fail("datagen.train_num_seeds", train_num_seeds, "training worlds must have seeds below 10000");
-  if (val_first_seed + val_num_seeds > 10000) fail("datagen.val_num_seeds", val_num_seeds, "validation worlds must have seeds below 10000");
-  const bool overlap = val_first_seed < train_first_seed + train_num_seeds && train_first_seed < val_first_seed + val_num_seeds;
-  if (overlap && train_num_seeds > 0 && val_num_seeds > 0)
-    fail("datagen.val_first_seed", val_first_seed, "validation seeds must not overlap the training seeds");
+  if (train_first + train_num > 10000)
+    fail("train_num_seeds", train_num, "training worlds must have seeds below 10000");
+  if (val_first + val_num > 10000) fail("val_num_seeds", val_num, "validation worlds must have seeds below 10000");
+  const bool overlap = val_first < train_first + train_num && train_first < val_first + val_num;
+  if (overlap && train_num > 0 && val_num > 0)
+    fail("val_first_seed", val_first, "validation seeds must not overlap the training seeds");
+}
+
+void DatagenOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "datagen.");
+  CheckTrainingSeeds("datagen.", train_first_seed, train_num_seeds, val_first_seed, val_num_seeds);
   if (kinds.empty()) throw core::ConfigError("<options>", "datagen.kinds", "[]", "list at least one world kind");
 }
 
@@ -68,7 +70,8 @@ WorldSampler::~WorldSampler() = default;
 
 core::Pose2 SamplePose(const core::World& w, const SampleId& id, double min_clearance) {
   // The pose is a pure function of the sample: its own random stream.
-  core::Rng rng(core::DeriveSeed(core::DeriveSeed(id.world_seed, uint64_t(id.kind) + 1), uint64_t(id.index) * 2 + uint64_t(id.split)));
+  core::Rng rng(core::DeriveSeed(core::DeriveSeed(id.world_seed, uint64_t(id.kind) + 1),
+                                 uint64_t(id.index) * 2 + uint64_t(id.split)));
   for (int tries = 0; tries < 10000; ++tries) {
     const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
     if (core::IsFree(w, p, true) && core::SignedDistance(w, p, true) >= min_clearance)

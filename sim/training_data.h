@@ -31,6 +31,10 @@ struct DatagenOptions {
   void Validate() const;         // ranges, seeds below 10000, disjoint splits, at least one kind
 };
 
+// Throws core::ConfigError (keys prefix + "train_num_seeds", ...) unless both seed ranges lie below 10000 and
+// do not overlap.
+void CheckTrainingSeeds(const std::string& prefix, int train_first, int train_num, int val_first, int val_num);
+
 enum class Split { kTrain, kVal };
 const char* ToString(Split split);
 

@@ -3,43 +3,80 @@
 #include <fmt/core.h>
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "experiments/cli/common.h"
 #include "experiments/cli_parse.h"
 #include "experiments/datagen.h"
 #include "experiments/sensor_eval.h"
+#include "experiments/subgoal_data.h"
+#include "experiments/subgoal_export.h"
 #include "learning/trainer.h"
+
+// jemalloc's control interface when the binary links it (experiments/internal/jemalloc_conf.c), else null.
+extern "C" int mallctl(const char* name, void* oldp, size_t* oldlenp, void* newp, size_t newlen) __attribute__((weak));
 
 namespace toponav::cli {
 
 namespace {
+
+// Hands the allocator's freed pages back to the system.  jemalloc runs without page decay (LibTorch's large
+// activations are reused instead of refaulted), but training over a large in-memory set grew by ~15 MB a step
+// (freed pages not reused; out of memory after ~1000 steps of configs/learning/lsp_cpu.yaml): purging every
+// 50 steps keeps it flat (every 10 cost 20 % of the speed in refaulted pages).
+void PurgeFreedPages() {
+  if (mallctl) mallctl("arena.4096.purge", nullptr, nullptr, nullptr, 0);  // 4096: MALLCTL_ARENAS_ALL
+}
 
 // ---------------------------------------------------------------- datagen
 
 struct DatagenArgs {
   std::string config = "configs/learning/ci.yaml", out = "results/dataset";
   int max_samples = 0;
+  bool subgoal = false;
 };
+
+int RunSubgoalDatagen(const DatagenArgs& a, const experiments::Config& cfg) {
+  const auto& d = cfg.subgoal_data;
+  fmt::print(
+      "toponav datagen --subgoal: optimistic runs through {} training and {} validation mazes, a sample every {} "
+      "steps{} -> {}\n",
+      d.train_num_seeds, d.val_num_seeds, d.every,
+      a.max_samples > 0 ? fmt::format(", at most {} per split", a.max_samples) : "", a.out);
+  const auto s = experiments::ExportSubgoalDataset(cfg, a.out, a.max_samples);
+  fmt::print(
+      "wrote {} samples in {:.1f} s ({:.1f} samples/s): {}/subgoal_dataset.json, index.csv, train/, val/, "
+      "contact_sheet.png\n",
+      s.samples, s.seconds, s.samples_per_second(), a.out);
+  return 0;
+}
 
 int RunDatagen(const DatagenArgs& a) {
   const experiments::Config cfg = experiments::LoadConfig(a.config);
+  if (a.subgoal) return RunSubgoalDatagen(a, cfg);
   const core::RangeBearingGrid grid;
   fmt::print("toponav datagen: {} training and {} validation samples ({} per world){} -> {}\n",
              experiments::ListSamples(cfg.datagen, experiments::Split::kTrain).size(),
              experiments::ListSamples(cfg.datagen, experiments::Split::kVal).size(), cfg.datagen.samples_per_world,
              a.max_samples > 0 ? fmt::format(", at most {} per split", a.max_samples) : "", a.out);
   const auto s = experiments::ExportDataset(cfg.datagen, cfg.worlds, cfg.render, grid, a.out, a.max_samples);
-  fmt::print("wrote {} samples in {:.1f} s ({:.1f} samples/s): {}/dataset.json, index.csv, train/, val/, contact_sheet.png\n",
-             s.samples, s.seconds, s.samples_per_second(), a.out);
+  fmt::print(
+      "wrote {} samples in {:.1f} s ({:.1f} samples/s): {}/dataset.json, index.csv, train/, val/, contact_sheet.png\n",
+      s.samples, s.seconds, s.samples_per_second(), a.out);
   return 0;
 }
 
 CLI::App* AddDatagenCommand(CLI::App& app, DatagenArgs* a) {
-  CLI::App* cmd = app.add_subcommand("datagen", "Export training data for the learned vertex sensor: panoramas and their "
-                                                "vertex labels on the range-bearing grid (README: Training data)");
+  CLI::App* cmd = app.add_subcommand("datagen",
+                                     "Export training data for the learned vertex sensor: panoramas and their "
+                                     "vertex labels on the range-bearing grid (README: Training data)");
   cmd->add_option("--config", a->config, "Config with a datagen: section")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->capture_default_str();
-  cmd->add_option("--max-samples", a->max_samples, "At most this many samples per split (0: all)")->check(CLI::Range(0, 100000000));
+  cmd->add_option("--max-samples", a->max_samples, "At most this many samples per split (0: all)")
+      ->check(CLI::Range(0, 100000000));
+  cmd->add_flag("--subgoal", a->subgoal,
+                "Export the LSP network's data instead: the config's subgoal_data mazes, "
+                "panoramas with vertex and frontier labels");
   return cmd;
 }
 
@@ -52,30 +89,67 @@ struct TrainArgs {
 
 std::string Duration(double s) { return fmt::format("{}m{:02d}s", int(s) / 60, int(s) % 60); }
 
+// The subgoal network's examples: optimistic runs through the subgoal_data mazes, rendered.
+learning::TrainingSet SubgoalTrainingSet(const experiments::Config& cfg) {
+  learning::TrainingSet set;
+  for (const sim::Split split : {sim::Split::kTrain, sim::Split::kVal}) {
+    auto& into = split == sim::Split::kTrain ? set.train : set.val;
+    const auto progress = [&](int done, int total, size_t n) {
+      std::cerr << fmt::format("[data] {} mazes {}/{}: {} examples\n", sim::ToString(split), done, total, n);
+    };
+    for (auto& e : experiments::MakeSubgoalExamples(cfg, split, progress)) {
+      const learning::GoalInView goal{core::Norm(e.goal), std::atan2(e.goal.y, e.goal.x)};
+      into.push_back({std::move(e.image), std::move(e.labels), goal, std::move(e.subgoal)});
+    }
+  }
+  const auto& d = cfg.subgoal_data;
+  set.identity_json = nlohmann::json{
+      {"kinds", {"guided_maze"}},
+      {"train_seeds", {d.train_first_seed, d.train_first_seed + d.train_num_seeds - 1}},
+      {"val_seeds", {d.val_first_seed, d.val_first_seed + d.val_num_seeds - 1}},
+      {"every", d.every}}.dump();
+  return set;
+}
+
 int RunTrain(const TrainArgs& a) {
   const experiments::Config cfg = experiments::LoadConfig(a.config);
   const auto& t = cfg.train;
-  fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}; data: {} training and {} "
-             "validation worlds of {} kinds, {} samples each -> {}\n",
-             t.width, t.batch_size, t.steps, t.learning_rate, t.validate_every, cfg.datagen.train_num_seeds,
-             cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(), cfg.datagen.samples_per_world, a.out);
+  const auto& sd = cfg.subgoal_data;
+  const std::string data =
+      t.subgoal ? fmt::format(
+                      "subgoal examples every {} steps of optimistic runs through {} training and {} validation mazes",
+                      sd.every, sd.train_num_seeds, sd.val_num_seeds)
+                : fmt::format("{} training and {} validation worlds of {} kinds, {} samples each",
+                              cfg.datagen.train_num_seeds, cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(),
+                              cfg.datagen.samples_per_world);
+  fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}{}; data: {} -> {}\n", t.width,
+             t.batch_size, t.steps, t.learning_rate, t.validate_every,
+             t.init_from.empty() ? "" : ", starting from " + t.init_from, data, a.out);
+  std::fflush(stdout);
   auto report = [&](const learning::TrainProgress& p) {
+    if (p.step % 50 == 0) PurgeFreedPages();
     if (a.quiet && p.val_loss < 0) return;
-    std::cerr << fmt::format("[train] step {}/{} loss {:.3f}{} elapsed {} ETA {}\n", p.step, p.steps, p.train_loss,
-                             p.val_loss >= 0 ? fmt::format(" val {:.3f} (best {:.3f})", p.val_loss, p.best_val_loss) : "",
-                             Duration(p.seconds), Duration(p.eta_seconds));
+    std::cerr << fmt::format(
+        "[train] step {}/{} loss {:.3f}{} elapsed {} ETA {}\n", p.step, p.steps, p.train_loss,
+        p.val_loss >= 0 ? fmt::format(" val {:.3f} (best {:.3f})", p.val_loss, p.best_val_loss) : "",
+        Duration(p.seconds), Duration(p.eta_seconds));
   };
-  const auto r = learning::Train(cfg.datagen, cfg.worlds, cfg.render, t, a.out, a.fresh, report);
-  fmt::print("{}{} training / {} validation samples; best validation loss {:.4f} at step {}; {:.1f} s ({:.2f} steps/s) "
-             "-> {}\n",
-             r.resumed_from > 0 ? fmt::format("resumed at step {}; ", r.resumed_from) : "", r.train_samples, r.val_samples,
-             r.best_val_loss, r.best_step, r.seconds, (r.steps - r.resumed_from) / std::max(r.seconds, 1e-9), r.model_path);
+  const learning::TrainingSet set =
+      t.subgoal ? SubgoalTrainingSet(cfg) : learning::RenderVertexExamples(cfg.datagen, cfg.worlds, cfg.render);
+  const auto r = learning::Train(set, t, a.out, a.fresh, report);
+  fmt::print(
+      "{}{} training / {} validation samples; best validation loss {:.4f} at step {}; {:.1f} s ({:.2f} steps/s) "
+      "-> {}\n",
+      r.resumed_from > 0 ? fmt::format("resumed at step {}; ", r.resumed_from) : "", r.train_samples, r.val_samples,
+      r.best_val_loss, r.best_step, r.seconds, (r.steps - r.resumed_from) / std::max(r.seconds, 1e-9), r.model_path);
   return 0;
 }
 
 CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
-  CLI::App* cmd = app.add_subcommand("train", "Train the learned vertex sensor on samples rendered from the config's "
-                                              "datagen worlds; resumable; writes model.pt (the best on validation)");
+  CLI::App* cmd = app.add_subcommand("train",
+                                     "Train the learned vertex sensor on samples rendered from the config's "
+                                     "datagen worlds (train.subgoal: the LSP network on subgoal_data mazes); "
+                                     "resumable; writes model.pt (the best on validation)");
   cmd->add_option("--config", a->config, "Config with datagen: and train: sections")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory: model.pt, checkpoint.pt, train_state.json, train_log.csv")
       ->capture_default_str();
@@ -100,10 +174,11 @@ int RunEvalSensor(const EvalSensorArgs& a) {
   const auto e = experiments::EvaluateSensor(cfg, o);
   const std::string on = fmt::format("{} seeds {}, {} poses a world ({} sensor{})", a.kind, a.seeds, a.samples,
                                      experiments::ToString(cfg.sensor.kind), a.model.empty() ? "" : " " + a.model);
-  fmt::print("{} observations, {} true vertices, {} detections: precision {:.3f}, recall {:.3f}, F1 {:.3f}, label accuracy "
-             "{:.3f}, mean range error {:.2f}, mean bearing error {:.4f} rad ({:.1f} s)\n",
-             e.observations, e.true_vertices, e.detections, e.precision(), e.recall(), e.f1(), e.label_accuracy(),
-             e.mean_range_error(), e.mean_bearing_error(), e.seconds);
+  fmt::print(
+      "{} observations, {} true vertices, {} detections: precision {:.3f}, recall {:.3f}, F1 {:.3f}, label accuracy "
+      "{:.3f}, mean range error {:.2f}, mean bearing error {:.4f} rad ({:.1f} s)\n",
+      e.observations, e.true_vertices, e.detections, e.precision(), e.recall(), e.f1(), e.label_accuracy(),
+      e.mean_range_error(), e.mean_bearing_error(), e.seconds);
   const std::string yaml = experiments::NoisySensorYaml(e, on);
   fmt::print("{}", yaml);
   if (!a.out.empty()) WriteTextFile(a.out, yaml);
@@ -111,13 +186,17 @@ int RunEvalSensor(const EvalSensorArgs& a) {
 }
 
 CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
-  CLI::App* cmd = app.add_subcommand("eval-sensor", "Score a sensor against the ray-cast ground truth: precision, recall, F1, "
-                                                    "label accuracy, range/bearing error, and a calibrated noisy-sensor block");
+  CLI::App* cmd = app.add_subcommand("eval-sensor",
+                                     "Score a sensor against the ray-cast ground truth: precision, recall, F1, "
+                                     "label accuracy, range/bearing error, and a calibrated noisy-sensor block");
   cmd->add_option("--config", a->config, "Config whose sensor: to evaluate (default: the noisy sensor)");
   cmd->add_option("--model", a->model, "Evaluate the learned sensor with this model file instead");
   cmd->add_option("--kind", a->kind, "World kind")->capture_default_str();
-  cmd->add_option("--seeds", a->seeds, "World seeds A-B (held-out quality: seeds from 10000, never trained on)")->capture_default_str();
-  cmd->add_option("--samples-per-world", a->samples, "Poses per world")->capture_default_str()->check(CLI::Range(1, 100000));
+  cmd->add_option("--seeds", a->seeds, "World seeds A-B (held-out quality: seeds from 10000, never trained on)")
+      ->capture_default_str();
+  cmd->add_option("--samples-per-world", a->samples, "Poses per world")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", a->out, "Also write the sensor: block to this YAML file");
   return cmd;
 }

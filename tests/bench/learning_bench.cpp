@@ -1,5 +1,5 @@
-// The learned vertex sensor's speed on this machine: inference per panorama and training steps, for a
-// quarter-width (CPU) net and the paper-size net.
+// The learned vertex sensor's speed on this machine: inference per panorama (the vertex network and its LSP
+// extension) and training steps, for a quarter-width (CPU) net and the paper-size net.
 #include <benchmark/benchmark.h>
 
 #include "learning/learning.h"
@@ -38,6 +38,19 @@ void BM_PredictPanorama(benchmark::State& state) {
   state.counters["parameters"] = double(m.num_parameters());
 }
 BENCHMARK(BM_PredictPanorama)->Arg(25)->Arg(100)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The LSP network's inference (the vertex grid and the 64x256 subgoal grid for a goal).  Arg: width in percent.
+void BM_PredictWithGoal(benchmark::State& state) {
+  learning::SelectBackend(false, 2);
+  learning::VertexNetOptions o;
+  o.width = state.range(0) / 100.0;
+  o.subgoal = true;
+  const learning::VertexModel m(o, 1);
+  const Data& d = OnePanorama();
+  for (auto _ : state) benchmark::DoNotOptimize(m.PredictWithGoal(d.image, {80.0, 1.0}));
+  state.counters["parameters"] = double(m.num_parameters());
+}
+BENCHMARK(BM_PredictWithGoal)->Arg(25)->Arg(100)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Args: width in percent, batch size.
 void BM_TrainStep(benchmark::State& state) {

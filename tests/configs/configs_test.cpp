@@ -20,5 +20,20 @@ TEST(ShippedConfigs, EveryYamlFileLoadsAndValidates) {
   EXPECT_GE(count, 1);
 }
 
+TEST(ShippedConfigs, EveryCommittedModelTheyNameIsThere) {
+  const std::filesystem::path source(TOPONAV_SOURCE_DIR);
+  int named = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(source / "configs")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const Config c = LoadConfig(entry.path().string());
+    for (const std::string& model : {c.sensor.learned.model, c.train.init_from}) {
+      if (model.rfind("models/", 0) != 0) continue;  // a model a recipe writes elsewhere first
+      EXPECT_TRUE(std::filesystem::is_regular_file(source / model)) << entry.path() << " names " << model;
+      ++named;
+    }
+  }
+  EXPECT_GE(named, 1);
+}
+
 }  // namespace
 }  // namespace toponav::experiments

@@ -29,9 +29,10 @@ TEST(Config, EmptyFileGivesDefaults) {
 }
 
 TEST(Config, ValuesAreRead) {
-  const Config c = ParseConfig("worlds:\n  labyrinth:\n    num_rooms: 5\nmotion:\n  step_length: 2.5\n"
-                               "demo:\n  kinds: [guided_maze]\n  seed: 12345\n",
-                               "x.yaml");
+  const Config c = ParseConfig(
+      "worlds:\n  labyrinth:\n    num_rooms: 5\nmotion:\n  step_length: 2.5\n"
+      "demo:\n  kinds: [guided_maze]\n  seed: 12345\n",
+      "x.yaml");
   EXPECT_EQ(c.worlds.labyrinth.num_rooms, 5);
   EXPECT_DOUBLE_EQ(c.motion.step_length, 2.5);
   ASSERT_EQ(c.demo.kinds.size(), 1u);
@@ -47,7 +48,8 @@ TEST(Config, OpenWorldSettingsFormOneBlock) {
   EXPECT_EQ(c.bench.mcmc_every, 5);
   EXPECT_EQ(c.open_world.mcmc_every, 1);
   EXPECT_EQ(ErrorOf("open_world:\n  mcmc_every: 0\n").key(), "open_world.mcmc_every");
-  EXPECT_EQ(ErrorOf("bench:\n  open_world_mcmc_every: 2\n").key(), "bench.open_world_mcmc_every") << "the old key is gone";
+  EXPECT_EQ(ErrorOf("bench:\n  open_world_mcmc_every: 2\n").key(), "bench.open_world_mcmc_every")
+      << "the old key is gone";
   EXPECT_EQ(ErrorOf("motion:\n  open_world_step_length: 3\n").key(), "motion.open_world_step_length");
   // Derived once: agents in an open world take the open-world step.
   core::World open;
@@ -71,8 +73,10 @@ void ExpectOneRangePerKey(const std::string& section, Get get) {
     EXPECT_EQ(ErrorOf(yaml.str()).key(), section + "." + f.key);
     Config c;
     Options& o = get(c);
-    if (const auto* d = std::get_if<double Options::*>(&f.member)) o.*(*d) = bad;
-    else o.*std::get<int Options::*>(f.member) = int(bad);
+    if (const auto* d = std::get_if<double Options::*>(&f.member))
+      o.*(*d) = bad;
+    else
+      o.*std::get<int Options::*>(f.member) = int(bad);
     try {
       Validate(c);
       ADD_FAILURE() << section << "." << f.key << " = " << bad << " passed Validate()";
@@ -85,21 +89,52 @@ void ExpectOneRangePerKey(const std::string& section, Get get) {
 }
 
 TEST(Config, EachKeysRangeIsDeclaredOnceForTheReaderAndValidate) {
-  ExpectOneRangePerKey<mapping::MapperOptions>("mapping", [](Config& c) -> auto& { return c.mapping; });
-  ExpectOneRangePerKey<planning::PlannerOptions>("planning", [](Config& c) -> auto& { return c.planning; });
-  ExpectOneRangePerKey<SearchOptions>("search", [](Config& c) -> auto& { return c.search; });
-  ExpectOneRangePerKey<sim::NoisySensorOptions>("sensor", [](Config& c) -> auto& { return c.sensor.noisy; });
-  ExpectOneRangePerKey<sim::MotionOptions>("motion", [](Config& c) -> auto& { return c.motion; });
-  ExpectOneRangePerKey<sim::RenderOptions>("render", [](Config& c) -> auto& { return c.render; });
-  ExpectOneRangePerKey<OpenWorldOptions>("open_world", [](Config& c) -> auto& { return c.open_world; });
-  ExpectOneRangePerKey<NavigationOptions>("navigation", [](Config& c) -> auto& { return c.navigation; });
-  ExpectOneRangePerKey<BenchOptions>("bench", [](Config& c) -> auto& { return c.bench; });
-  ExpectOneRangePerKey<PictureOptions>("picture", [](Config& c) -> auto& { return c.picture; });
+  ExpectOneRangePerKey<mapping::MapperOptions>(
+      "mapping", [](Config & c) -> auto& { return c.mapping; });
+  ExpectOneRangePerKey<planning::PlannerOptions>(
+      "planning", [](Config & c) -> auto& { return c.planning; });
+  ExpectOneRangePerKey<SearchOptions>(
+      "search", [](Config & c) -> auto& { return c.search; });
+  ExpectOneRangePerKey<sim::NoisySensorOptions>(
+      "sensor", [](Config & c) -> auto& { return c.sensor.noisy; });
+  ExpectOneRangePerKey<sim::MotionOptions>(
+      "motion", [](Config & c) -> auto& { return c.motion; });
+  ExpectOneRangePerKey<sim::RenderOptions>(
+      "render", [](Config & c) -> auto& { return c.render; });
+  ExpectOneRangePerKey<OpenWorldOptions>(
+      "open_world", [](Config & c) -> auto& { return c.open_world; });
+  ExpectOneRangePerKey<NavigationOptions>(
+      "navigation", [](Config & c) -> auto& { return c.navigation; });
+  ExpectOneRangePerKey<BenchOptions>(
+      "bench", [](Config & c) -> auto& { return c.bench; });
+  ExpectOneRangePerKey<PictureOptions>(
+      "picture", [](Config & c) -> auto& { return c.picture; });
+  ExpectOneRangePerKey<SubgoalDataOptions>(
+      "subgoal_data", [](Config & c) -> auto& { return c.subgoal_data; });
+  ExpectOneRangePerKey<learning::TrainOptions>(
+      "train", [](Config & c) -> auto& { return c.train; });
+}
+
+TEST(Config, TheSubgoalNetworksDataAndStartingModelAreRead) {
+  const Config c = ParseConfig(
+      "subgoal_data:\n  train_first_seed: 100\n  train_num_seeds: 5\n  val_first_seed: 200\n  val_num_seeds: 2\n  "
+      "every: 4\n"
+      "train:\n  subgoal: true\n  init_from: models/vertex_net_cpu.pt\n",
+      "configs/lsp.yaml");
+  EXPECT_EQ(c.subgoal_data.train_num_seeds, 5);
+  EXPECT_EQ(c.subgoal_data.every, 4);
+  EXPECT_TRUE(c.train.subgoal);
+  EXPECT_EQ(c.train.init_from, "models/vertex_net_cpu.pt");
+  EXPECT_EQ(ErrorOf("subgoal_data:\n  train_first_seed: 9990\n  train_num_seeds: 20\n").key(),
+            "subgoal_data.train_num_seeds")
+      << "benchmark mazes (seeds from 10000) are never trained on";
+  EXPECT_EQ(ErrorOf("subgoal_data:\n  train_first_seed: 2000\n  val_first_seed: 2050\n").key(),
+            "subgoal_data.val_first_seed")
+      << "validation mazes are not training mazes";
 }
 
 TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
-  const Config c = ParseConfig(
-      "search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  unreachable_steps: 9\n", "x.yaml");
+  const Config c = ParseConfig("search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  unreachable_steps: 9\n", "x.yaml");
   EXPECT_EQ(c.search.give_up_steps, 12);
   EXPECT_EQ(c.search.unreachable_steps, 9);
   EXPECT_DOUBLE_EQ(c.search.switch_ratio, 2.0);
@@ -131,9 +166,7 @@ TEST(Config, UnknownKeyNamesFileAndKeyPath) {
   EXPECT_NE(std::string(e.what()).find("unknown key"), std::string::npos);
 }
 
-TEST(Config, UnknownTopLevelSectionIsAnError) {
-  EXPECT_EQ(ErrorOf("mapper:\n  x: 1\n").key(), "mapper");
-}
+TEST(Config, UnknownTopLevelSectionIsAnError) { EXPECT_EQ(ErrorOf("mapper:\n  x: 1\n").key(), "mapper"); }
 
 TEST(Config, WrongTypeNamesKeyAndValue) {
   const auto e = ErrorOf("motion:\n  step_length: fast\n");
@@ -165,9 +198,7 @@ TEST(Config, UnknownWorldKindIsNamed) {
   EXPECT_EQ(e.value(), "castle");
 }
 
-TEST(Config, MissingFileIsAConfigError) {
-  EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), core::ConfigError);
-}
+TEST(Config, MissingFileIsAConfigError) { EXPECT_THROW(LoadConfig("/nonexistent/config.yaml"), core::ConfigError); }
 
 TEST(Config, InvalidYamlIsAConfigError) {
   EXPECT_THROW(ParseConfig("worlds: [unclosed\n", "broken.yaml"), core::ConfigError);
@@ -198,13 +229,9 @@ TEST(Config, QuotedNumberIsAnError) {
   }
 }
 
-TEST(Config, NonScalarKeyIsAConfigError) {
-  EXPECT_THROW(ParseConfig("? [a, b]\n: 1\n", "k.yaml"), core::ConfigError);
-}
+TEST(Config, NonScalarKeyIsAConfigError) { EXPECT_THROW(ParseConfig("? [a, b]\n: 1\n", "k.yaml"), core::ConfigError); }
 
-TEST(Config, DirectoryIsNotAConfigFile) {
-  EXPECT_THROW(LoadConfig(TOPONAV_SOURCE_DIR "/configs"), core::ConfigError);
-}
+TEST(Config, DirectoryIsNotAConfigFile) { EXPECT_THROW(LoadConfig(TOPONAV_SOURCE_DIR "/configs"), core::ConfigError); }
 
 }  // namespace
 }  // namespace toponav::experiments

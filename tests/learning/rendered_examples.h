@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/subgoal_labels.h"
 #include "core/world.h"
 #include "sim/raycast.h"
 #include "sim/render.h"
@@ -28,6 +29,26 @@ inline Rendered RenderAtStart(const core::World& w, const std::vector<double>& y
     r.labels.push_back(sim::RasterizeVertexLabels(caster.VisibleVertices(pose, 100.0), core::RangeBearingGrid{}));
   }
   return r;
+}
+
+// Made-up subgoal labels: a band of frontier cells in row 10 of the 64x256 grid, the left half (columns
+// below 128) leading to the goal (Ps 1, success cost 30), the right half not (exploration cost 120).
+inline core::SubgoalLabelGrid SubgoalBand() {
+  core::SubgoalLabelGrid s;
+  s.grid = {64, 256, 100.0};
+  s.mask.assign(s.grid.size(), 0);
+  s.ps.assign(s.grid.size(), 0.0f);
+  s.delta_success.assign(s.grid.size(), 0.0f);
+  s.exploration.assign(s.grid.size(), 0.0f);
+  for (int col = 0; col < 256; ++col) {
+    const size_t i = s.grid.Index(10, col);
+    s.mask[i] = 1;
+    const bool left = col < 128;
+    s.ps[i] = left ? 1.0f : 0.0f;
+    s.delta_success[i] = left ? 30.0f : 0.0f;
+    s.exploration[i] = left ? 0.0f : 120.0f;
+  }
+  return s;
 }
 
 }  // namespace toponav::learning::testing

@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "core/error.h"
+#include "learning/learned_detector.h"
 #include "learning/vertex_model.h"
 #include "sim/worlds.h"
 #include "tests/learning/rendered_examples.h"
@@ -20,8 +22,7 @@ VertexNetOptions TinySubgoal() {
   return o;
 }
 
-// Two maze panoramas with their vertex labels, and made-up subgoal labels: a band of frontier cells, the
-// left half leading to the goal (Ps 1, success cost 30), the right half not (exploration cost 120).
+// Two maze panoramas with their vertex labels, and made-up subgoal labels (testing::SubgoalBand).
 struct Examples {
   std::vector<core::Panorama> images;
   std::vector<sim::VertexLabelGrid> labels;
@@ -37,23 +38,7 @@ Examples MakeExamples() {
   Examples e;
   e.images = std::move(r.images);
   e.labels = std::move(r.labels);
-  for (size_t k = 0; k < e.images.size(); ++k) {
-    core::SubgoalLabelGrid s;
-    s.grid = {64, 256, 100.0};
-    s.mask.assign(s.grid.size(), 0);
-    s.ps.assign(s.grid.size(), 0.0f);
-    s.delta_success.assign(s.grid.size(), 0.0f);
-    s.exploration.assign(s.grid.size(), 0.0f);
-    for (int col = 0; col < 256; ++col) {
-      const size_t i = s.grid.Index(10, col);
-      s.mask[i] = 1;
-      const bool left = col < 128;
-      s.ps[i] = left ? 1.0f : 0.0f;
-      s.delta_success[i] = left ? 30.0f : 0.0f;
-      s.exploration[i] = left ? 0.0f : 120.0f;
-    }
-    e.subgoal.push_back(s);
-  }
+  for (size_t k = 0; k < e.images.size(); ++k) e.subgoal.push_back(testing::SubgoalBand());
   return e;
 }
 
@@ -91,6 +76,47 @@ TEST(SubgoalModel, SaveAndLoadKeepTheExtensionAndGiveIdenticalOutputs) {
   const VertexModel loaded = VertexModel::Load(path);
   EXPECT_TRUE(loaded.options().subgoal);
   EXPECT_EQ(loaded.PredictWithGoal(e.images[1], {20.0, -1.0}).second.ps, m.PredictWithGoal(e.images[1], {20.0, -1.0}).second.ps);
+  fs::remove(path);
+}
+
+TEST(SubgoalModel, StartedFromAVertexModelItGivesThatModelsVertexGridForAGoalAtRangeZero) {
+  VertexModel vertex(VertexNetOptions{0.125}, 4);
+  const Examples e = MakeExamples();
+  vertex.TrainStep({{&e.images[0], &e.labels[0], {}, nullptr}}, 1e-3);  // BatchNorm statistics away from their defaults
+  VertexModel sub(TinySubgoal(), 5);
+  EXPECT_EQ(sub.InitFrom(VertexModel(VertexNetOptions{0.25}, 4)), 0) << "another width: nothing fits";
+  const int copied = sub.InitFrom(vertex);
+  EXPECT_GT(copied, 40);
+  const GridOutput want = vertex.Predict(e.images[1]), got = sub.PredictWithGoal(e.images[1], {0.0, 0.0}).first;
+  ASSERT_EQ(want.vertex.size(), got.vertex.size());
+  for (size_t i = 0; i < want.vertex.size(); ++i) ASSERT_NEAR(want.vertex[i], got.vertex[i], 1e-5) << i;
+  EXPECT_GT(std::abs(sub.PredictWithGoal(e.images[1], {60.0, 1.0}).first.vertex[100] - want.vertex[100]), 0.0)
+      << "the goal's channels are its own";
+}
+
+TEST(LearnedDetector, ASubgoalModelGivenAGoalFillsTheCellsWithPsAndTheTwoCosts) {
+  const VertexModel m(TinySubgoal(), 6);
+  const std::string path =
+      (fs::temp_directory_path() / ("toponav_subgoal_det_" + std::to_string(::getpid()) + ".pt")).string();
+  m.Save(path);
+  const auto detector = CreateLearnedDetector(path, {});
+  const Examples e = MakeExamples();
+  core::DetectionContext context{{1.0, 2.0, 0.3}, 0, core::Vec2{30.0, 40.0}};
+  const core::Observation z = detector->Detect(e.images[0], context);
+  ASSERT_EQ(z.cells.channels, (std::vector<std::string>{"ps", "delta_success", "exploration"}));
+  EXPECT_EQ(z.cells.rows, 64);
+  EXPECT_EQ(z.cells.cols, 256);
+  EXPECT_EQ(z.cells.max_range, 100.0);
+  const SubgoalOutput want = m.PredictWithGoal(e.images[0], {50.0, std::atan2(40.0, 30.0)}).second;
+  for (int row : {0, 10, 63})
+    for (int col : {0, 77, 255}) {
+      const size_t i = want.grid.Index(row, col);
+      EXPECT_FLOAT_EQ(z.cells.at(row, col, 0), want.ps[i]);
+      EXPECT_FLOAT_EQ(z.cells.at(row, col, 1), want.delta_success[i]);
+      EXPECT_FLOAT_EQ(z.cells.at(row, col, 2), want.exploration[i]);
+    }
+  context.goal.reset();
+  EXPECT_TRUE(detector->Detect(e.images[0], context).cells.empty()) << "no goal, no subgoal outputs";
   fs::remove(path);
 }
 

@@ -6,6 +6,8 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "sim/worlds.h"
+#include "tests/learning/rendered_examples.h"
 
 namespace toponav::learning {
 namespace {
@@ -36,7 +38,8 @@ TEST(Trainer, AKilledRunResumesFromItsCheckpointAndKeepsTheBestModel) {
   const std::string dir = (fs::temp_directory_path() / ("toponav_train_" + std::to_string(::getpid()))).string();
   fs::remove_all(dir);
   int reports = 0;
-  const TrainResult first = Train(TinyData(), {}, {}, TinyTraining(4), dir, false, [&](const TrainProgress&) { ++reports; }, 1);
+  const TrainResult first = Train(
+      TinyData(), {}, {}, TinyTraining(4), dir, false, [&](const TrainProgress&) { ++reports; }, 1);
   EXPECT_EQ(first.resumed_from, 0);
   EXPECT_EQ(reports, 4);
   EXPECT_EQ(first.train_samples, 2);
@@ -54,6 +57,60 @@ TEST(Trainer, AKilledRunResumesFromItsCheckpointAndKeepsTheBestModel) {
   EXPECT_THROW(Train(TinyData(), {}, {}, wider, dir, false, nullptr), core::DataError);
   EXPECT_EQ(Train(TinyData(), {}, {}, TinyTraining(2), dir, true, nullptr).resumed_from, 0);
   fs::remove_all(dir);
+}
+
+TEST(Trainer, ARolledExampleTurnsItsImageVertexLabelsGoalAndSubgoalLabelsTogether) {
+  TrainingExample e;
+  e.image.width = 512;
+  e.image.height = 128;
+  e.image.rgb.assign(size_t(3 * 512 * 128), 0);
+  e.image.rgb[3 * (5 * 512 + 40)] = 255;  // row 5, column 40 (label column 10)
+  e.labels.cells.assign(e.labels.grid.size(), 0);
+  e.labels.cells[e.labels.grid.Index(3, 10)] = 2;
+  e.goal = {50.0, e.labels.grid.ColBearing(10)};
+  e.subgoal = testing::SubgoalBand();
+  e.subgoal->mask.assign(e.subgoal->grid.size(), 0);
+  e.subgoal->mask[e.subgoal->grid.Index(7, 20)] = 1;
+  e.subgoal->ps[e.subgoal->grid.Index(7, 20)] = 0.5f;
+  for (int k : {7, 120}) {
+    const TrainingExample r = Rolled(e, k);
+    const int col = (10 + k) % 128;
+    EXPECT_EQ(r.image.rgb[3 * (5 * 512 + 4 * col)], 255) << k;
+    EXPECT_EQ(r.labels.cells[r.labels.grid.Index(3, col)], 2) << k;
+    EXPECT_EQ(r.labels.grid.BearingCol(r.goal.bearing), col) << "the goal turns with the image";
+    EXPECT_DOUBLE_EQ(r.goal.range, 50.0);
+    EXPECT_EQ(r.subgoal->mask[r.subgoal->grid.Index(7, 2 * col)], 1) << k;
+    EXPECT_EQ(r.subgoal->ps[r.subgoal->grid.Index(7, 2 * col)], 0.5f) << k;
+    EXPECT_EQ(r.subgoal->mask[r.subgoal->grid.Index(7, 20)], 0) << k;
+  }
+}
+
+TEST(Trainer, TrainsTheSubgoalNetworkFromAVertexModelOnExamplesGivenInMemory) {
+  const std::string dir = (fs::temp_directory_path() / ("toponav_train_sub_" + std::to_string(::getpid()))).string();
+  fs::remove_all(dir);
+  const std::string vertex_path = dir + "_vertex.pt";
+  VertexModel(VertexNetOptions{0.125}, 3).Save(vertex_path);
+  testing::Rendered r = testing::RenderAtStart(sim::GenerateGuidedMaze({}, 4));
+  TrainingSet set;
+  for (size_t i = 0; i < r.images.size(); ++i)
+    (i == 0 ? set.train : set.val).push_back({r.images[i], r.labels[i], {40.0, 0.3}, testing::SubgoalBand()});
+  set.identity_json = R"({"mazes": "test"})";
+  TrainOptions o = TinyTraining(2);
+  o.subgoal = true;
+  o.init_from = vertex_path;
+  const TrainResult result = Train(set, o, dir, false, nullptr);
+  EXPECT_EQ(result.train_samples, 1);
+  const VertexModel m = VertexModel::Load(result.model_path);
+  EXPECT_TRUE(m.options().subgoal);
+  EXPECT_NE(m.notes().find("\"mazes\""), std::string::npos) << "the caller's data identity is in the notes";
+  EXPECT_NE(m.notes().find("init_from"), std::string::npos);
+  set.val[0].subgoal.reset();
+  EXPECT_THROW(Train(set, o, dir, true, nullptr), core::ConfigError) << "a subgoal run needs subgoal labels everywhere";
+  o.init_from = dir + "/missing.pt";
+  set.val[0].subgoal = testing::SubgoalBand();
+  EXPECT_THROW(Train(set, o, dir, true, nullptr), core::DataError);
+  fs::remove_all(dir);
+  fs::remove(vertex_path);
 }
 
 }  // namespace
