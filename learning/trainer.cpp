@@ -205,6 +205,16 @@ void Checkpoint(const fs::path& dir, const VertexModel& model, const json& ident
 
 namespace {
 
+// Both splits non-empty; with options.subgoal, every example labelled for it.
+void CheckExamples(const TrainingSet& data, const TrainOptions& o) {
+  if (data.train.empty() || data.val.empty())
+    throw core::ConfigError("<options>", "datagen", "", "training needs training and validation samples");
+  if (o.subgoal)
+    for (const auto* split : {&data.train, &data.val})
+      for (const auto& e : *split)
+        if (!e.subgoal) throw core::ConfigError("<options>", "train.subgoal", "true", "every example needs subgoal labels");
+}
+
 // A fresh model for the options: random weights, or those of options.init_from where they fit.
 VertexModel InitialModel(const TrainOptions& o, const std::string& device) {
   VertexNetOptions net;
@@ -227,15 +237,9 @@ TrainResult Train(const TrainingSet& data, const TrainOptions& o, const std::str
   fs::create_directories(dir);
   if (fresh)
     for (const char* f : {"train_state.json", "checkpoint.pt", "model.pt", "train_log.csv"}) fs::remove(dir / f);
+  CheckExamples(data, o);
   const std::vector<TrainingExample>& train = data.train;
   const std::vector<TrainingExample>& val = data.val;
-  if (train.empty() || val.empty())
-    throw core::ConfigError("<options>", "datagen", "", "training needs training and validation samples");
-  if (o.subgoal)
-    for (const auto* split : {&train, &val})
-      for (const auto& e : *split)
-        if (!e.subgoal)
-          throw core::ConfigError("<options>", "train.subgoal", "true", "every example needs subgoal labels");
   const json identity = {{"train", OptionsJson(o)}, {"data", json::parse(data.identity_json)}};
   VertexModel model = InitialModel(o, backend.device);
   RunState s = Resume(dir, identity, &model, backend.device);
