@@ -8,6 +8,9 @@
 
 namespace toponav::core {
 
+// The subgoal network's output grid (finer than the vertex grid's 32x128): labels and outputs share it.
+inline constexpr RangeBearingGrid kSubgoalGrid{64, 256, 100.0};
+
 struct SubgoalLabelGrid {
   RangeBearingGrid grid;
   std::vector<uint8_t> mask;                         // 1: a frontier cell the pose sees

@@ -54,7 +54,7 @@ std::vector<SubgoalExample> MakeSubgoalExamples(const Config& config, sim::Split
   o.Validate();
   const int first = split == sim::Split::kTrain ? o.train_first_seed : o.val_first_seed;
   const int count = split == sim::Split::kTrain ? o.train_num_seeds : o.val_num_seeds;
-  const core::RangeBearingGrid vertex_grid, subgoal_grid{64, 256, 100.0};
+  const core::RangeBearingGrid vertex_grid, subgoal_grid = core::kSubgoalGrid;
   std::vector<SubgoalExample> out;
   for (int k = 0; k < count; ++k) {
     const uint64_t seed = uint64_t(first + k);

@@ -39,8 +39,7 @@ class LearnedDetector : public core::VertexDetectorInterface {
       z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
       return z;
     }
-    const core::Vec2 g = *context.goal;
-    const auto [out, subgoal] = model_.PredictWithGoal(image, {core::Norm(g), std::atan2(g.y, g.x)});
+    const auto [out, subgoal] = model_.PredictWithGoal(image, GoalInView::FromAgentFrame(*context.goal));
     z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
     z.cells = SubgoalCells(subgoal);
     return z;

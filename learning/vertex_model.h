@@ -3,12 +3,14 @@
 // fully-convolutional encoder-decoder from a 128x512 RGB panorama to the 32x128 range-bearing grid, with a
 // vertex logit and 4 label logits per cell.  Bearing is circular, so convolutions pad circularly along the
 // image's width.  LibTorch stays inside learning/*.cpp.
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/geometry.h"
 #include "core/image.h"
 #include "core/range_bearing_grid.h"
 #include "core/subgoal_labels.h"
@@ -42,13 +44,16 @@ struct GridOutput {
 // The subgoal network's output for one panorama and goal, on its 64x256 grid: per cell the probability that
 // a frontier there leads to the goal, and the success and exploration costs.
 struct SubgoalOutput {
-  core::RangeBearingGrid grid{64, 256, 100.0};
+  core::RangeBearingGrid grid = core::kSubgoalGrid;
   std::vector<float> ps, delta_success, exploration;
 };
 
 // Where the goal is, seen from the panorama's pose (radians counter-clockwise from the heading).
 struct GoalInView {
   double range = 0.0, bearing = 0.0;
+  // From the goal's position in the agent's frame (x along the heading, y to its left): training and the
+  // sensor derive it the same way.
+  static GoalInView FromAgentFrame(const core::Vec2& g) { return {core::Norm(g), std::atan2(g.y, g.x)}; }
 };
 
 // One training example (subgoal models also need 'goal' and 'subgoal', labels on their 64x256 grid).

@@ -98,7 +98,7 @@ learning::TrainingSet SubgoalTrainingSet(const experiments::Config& cfg) {
       std::cerr << fmt::format("[data] {} mazes {}/{}: {} examples\n", sim::ToString(split), done, total, n);
     };
     for (auto& e : experiments::MakeSubgoalExamples(cfg, split, progress)) {
-      const learning::GoalInView goal{core::Norm(e.goal), std::atan2(e.goal.y, e.goal.x)};
+      const learning::GoalInView goal = learning::GoalInView::FromAgentFrame(e.goal);
       into.push_back({std::move(e.image), std::move(e.labels), goal, std::move(e.subgoal)});
     }
   }
