@@ -43,6 +43,9 @@ const core::OptionFields<NavigationOptions>& NavigationOptions::Fields() {
       {"stuck_window", &O::stuck_window, 2, 100000},
       {"stuck_span", &O::stuck_span, 0.0, 1000.0},
       {"cut_off_steps", &O::cut_off_steps, 1, 100000},
+      {"inspect_reach", &O::inspect_reach, 0.1, 1000.0},
+      {"doorway_min_width", &O::doorway_min_width, 0.1, 1000.0},
+      {"doorway_max_width", &O::doorway_max_width, 0.1, 1000.0},
   };
   return fields;
 }

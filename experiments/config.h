@@ -74,7 +74,12 @@ struct NavigationOptions {
   double goal_radius = 5.4;   // reached: the agent within this of the goal (the reference's 3 steps of 1.8)
   int stuck_window = 100;     // stuck: after this many steps, every position of the last this many ...
   double stuck_span = 9.0;    // ... lies within this of each other (the reference: 100 poses, 5 steps)
-  int cut_off_steps = 12;     // the map leaves no way to the goal and nothing to explore this many steps in a row
+  int cut_off_steps = 12;     // the map leaves no way to the goal, nothing to explore and no rejected vertex to
+                              // look at (planning::SuspectInspector) this many steps in a row
+  double inspect_reach = 8.0;  // a suspected false wall counts as looked at once the agent came this close (units)
+  // Doorway hypotheses (planning/doorways.h): openings between this wide and this wide (units)
+  double doorway_min_width = 8.0;
+  double doorway_max_width = 24.0;
   static const core::OptionFields<NavigationOptions>& Fields();
 };
 

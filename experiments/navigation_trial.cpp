@@ -4,13 +4,16 @@
 #include <cmath>
 #include <deque>
 #include <memory>
+#include <optional>
 
 #include "core/error.h"
 #include "experiments/agent_loop.h"
 #include "experiments/map_drive.h"
 #include "planning/cell_estimator.h"
+#include "planning/doorways.h"
 #include "planning/given_up_frontiers.h"
 #include "planning/lsp_planner.h"
+#include "planning/map_suspects.h"
 #include "planning/search_policy.h"
 
 namespace toponav::experiments {
@@ -63,11 +66,14 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
   return best;
 }
 
-// The goal-directed policy: the planner's way to the goal every step; where the map cuts the goal off, the
-// nearest frontier (exploring may show the cut to be a map error).  An agent that makes no headway is nudged
+// The goal-directed policy: the planner's way to the goal every step.  An agent that makes no headway is nudged
 // as in a search, and the frontier it stands at is blocked: a wall the map has not accepted yet (its vertices
-// seen edge-on or from too close) that the optimistic way runs through.  Blocked frontiers are walls to the
-// planners from then on (the same place under a new id too, planning::GivenUpFrontiers).
+// seen edge-on or from too close) that the optimistic way runs through; blocked frontiers are walls to the
+// planners (the same place under a new id too, planning::GivenUpFrontiers).  Where the map cuts the goal off
+// (a goal-directed trial's goal is reachable: some wall of the map is false), Recover() tries in turn a way
+// through a doorway hypothesis (planning/doorways.h), the blocked frontiers opened again, and a frontier or a
+// suspected false wall to look at from close by (planning::SuspectInspector); the trial ends "cut_off" only
+// when none is left for cut_off_steps steps.
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -77,8 +83,11 @@ class NavigationPolicy : public AgentPolicy {
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
-        blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
-        block_reach_(config.search.give_up_distance) {}
+        give_up_reach_(config.search.give_up_reach),
+        probe_radius_(config.search.give_up_probe_radius),
+        blocked_(give_up_reach_, probe_radius_),
+        block_reach_(config.search.give_up_distance),
+        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();
@@ -103,7 +112,8 @@ class NavigationPolicy : public AgentPolicy {
     if (const planning::LspDecision* d = planning::LastDecision(*planner_))
       for (size_t i = 0; i < d->frontier_ids.size(); ++i) estimates_[d->frontier_ids[i]] = d->properties[i].ps;
     if (on_estimates) on_estimates(estimates_);
-    if (choice_.status != planning::PlanStatus::kFound) choice_ = planning::ChooseNearestFrontier(graph, targets, at);
+    doorway_.reset();
+    if (choice_.status != planning::PlanStatus::kFound) choice_ = Recover(*state.view, view, graph, targets, at);
     cut_off_ = choice_.status == planning::PlanStatus::kFound ? 0 : cut_off_ + 1;
     if (cut_off_ >= options_.cut_off_steps) return End("cut_off");
     if (choice_.status == planning::PlanStatus::kFound)
@@ -119,6 +129,7 @@ class NavigationPolicy : public AgentPolicy {
     const Vec2 at = step.pose.position();
     const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
     if (blocked >= 0) blocked_.GiveUp(blocked, state.view->frontiers, &at);
+    if (doorway_) failed_doorways_.push_back(*doorway_);
     ++nudges_;
     return NudgeRandomly(motion, agent, state.step_length, rng);
   }
@@ -130,6 +141,37 @@ class NavigationPolicy : public AgentPolicy {
   int nudges() const { return nudges_; }
 
  private:
+  // Where the planner finds no way to the goal: the cheapest way through a doorway hypothesis; else, if some
+  // frontiers were given up, they are all opened again (no way this step); else a frontier or a suspected
+  // false wall to look at.
+  planning::FrontierChoice Recover(const mapping::MapView& map, const mapping::MapView& view,
+                                   const planning::VisibilityGraph& graph,
+                                   const std::vector<planning::FrontierTarget>& targets, const Vec2& at) {
+    planning::FrontierChoice c = ThroughDoorway(view, at);
+    if (c.status == planning::PlanStatus::kFound) return c;
+    if (blocked_.given_up() > 0) {
+      blocked_ = planning::GivenUpFrontiers(give_up_reach_, probe_radius_);
+      return c;
+    }
+    return inspector_.Choose(map, graph, at, goal_, targets);
+  }
+
+  // The way to the goal through the doorway hypothesis (not yet failed) that makes it cheapest.
+  planning::FrontierChoice ThroughDoorway(const mapping::MapView& view, const Vec2& at) {
+    constexpr double kOnWall = 2.0, kSame = 4.0;
+    planning::FrontierChoice best;
+    for (const auto& d : planning::DoorwayHypotheses(view, kOnWall, options_.doorway_min_width, options_.doorway_max_width)) {
+      bool failed = false;
+      for (const auto& f : failed_doorways_) failed = failed || core::Distance(f, d.middle()) < kSame;
+      if (failed) continue;
+      const planning::Path p = planning::VisibilityGraph(planning::WithDoorway(view, d), planning_, false).Plan(at, goal_);
+      if (!p || (best.status == planning::PlanStatus::kFound && p.cost >= best.path.cost)) continue;
+      best = {planning::PlanStatus::kFound, -1, p};
+      doorway_ = d.middle();
+    }
+    return best;
+  }
+
   bool End(const char* reason) {
     end_reason_ = reason;
     return false;
@@ -142,8 +184,12 @@ class NavigationPolicy : public AgentPolicy {
   std::unique_ptr<planning::Planner> planner_;
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   planning::StuckMonitor stuck_;
+  double give_up_reach_, probe_radius_;
   planning::GivenUpFrontiers blocked_;
   double block_reach_;
+  planning::SuspectInspector inspector_;
+  std::optional<Vec2> doorway_;        // the middle of the doorway hypothesis the agent heads through now
+  std::vector<Vec2> failed_doorways_;  // middles of those it made no headway through
   planning::FrontierChoice choice_;
   std::deque<Vec2> window_;
   std::map<int, double> estimates_;

@@ -26,7 +26,8 @@ struct MapperOptions {
   int min_detections = 3;                 // a vertex needs this many detections to enter a map
   double wall_threshold = 0.5;            // a wall exists when its averaged likelihood exceeds this
   double wall_skip_damping = 0.2;         // evidence for detections k apart is scaled by this^(k-1)
-  // Two detections less than this apart in bearing (radians) give no wall evidence: seen edge-on, a wall
+  // Two detections less than this apart in bearing (radians) give no wall evidence, and two map vertices
+  // less than this apart seen from an observation's pose no edge term in its likelihood: seen edge-on, a wall
   // between them and a doorway in it look the same, and which of their jambs falls between them in bearing
   // order is noise.  0: every pair counts (the reference).
   double wall_min_view_angle = 0.0;

@@ -112,7 +112,7 @@ double ObservationLogLikelihood(const MapCore& m, size_t k, const MapState& ms, 
     const size_t l = (j + 1) % H.size();
     const Vec2 a = m.Pos(H[j]), b = m.Pos(H[l]);
     const double gap = Wrap2Pi(std::atan2(b.y - p.y, b.x - p.x) - std::atan2(a.y - p.y, a.x - p.x));
-    if (gap >= core::kPi || H[j] == H[l]) continue;
+    if (gap >= core::kPi || H[j] == H[l] || gap < m.o.wall_min_view_angle) continue;
     const double no_ccw = det_of[j] >= 0 ? core::NoWallCcw(ob.det[size_t(det_of[j])].labels) : 0.5;
     const double no_cw = det_of[l] >= 0 ? core::NoWallCw(ob.det[size_t(det_of[l])].labels) : 0.5;
     const double q = 1.0 - 0.5 * (no_ccw + no_cw);

@@ -27,7 +27,8 @@ std::vector<int> Hypothetical(const MapCore& m, size_t k, const MapState& ms, co
                               bool with_candidates = false, StarMembers* cache = nullptr);
 
 // log P(z_k | m): false positives and negatives against the hypothetical observation, a truncated position
-// term for matches, and edge terms along consecutive hypothetical vertices.
+// term for matches, and edge terms along consecutive hypothetical vertices (none for a pair seen edge-on,
+// closer in bearing than wall_min_view_angle: it gives no wall evidence either).
 double ObservationLogLikelihood(const MapCore& m, size_t k, const MapState& ms, StarMembers* cache = nullptr);
 double LogPrior(const MapperOptions& o, const MapState& ms);
 // The log posterior of map state 'ms' over all observations.

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "core/rng.h"
 #include "mapping/mapping.h"
@@ -22,22 +23,25 @@ Detection Det(const core::Pose2& pose, Vec2 p, core::VertexLabel label) {
 
 // Two corners (0, 0) and (10, 0) seen only edge-on, from points on the line through them: a wall between
 // them and a doorway in it look the same from there.
-MapView EdgeOnPair(double min_view_angle) {
+// Both detected with 'label' each time.
+std::unique_ptr<Mapper> EdgeOnPairMapper(double min_view_angle, core::VertexLabel label) {
   MapperOptions o;
   o.world_bounds = core::Aabb2{{-30, -10}, {20, 10}};
   o.defer_to_mcmc = false;
   o.wall_min_view_angle = min_view_angle;
-  Mapper m(o);
+  auto m = std::make_unique<Mapper>(o);
   for (int i = 0; i < 12; ++i) {
     const core::Pose2 pose{-20.0 + i, 0.1 * (i % 3), 0.0};
     core::Observation z;
     z.pose = pose;
-    z.detections = {Det(pose, {0, 0}, core::VertexLabel::kCorner), Det(pose, {10, 0}, core::VertexLabel::kCorner)};
+    z.detections = {Det(pose, {0, 0}, label), Det(pose, {10, 0}, label)};
     std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
-    m.AddObservation(z);
+    m->AddObservation(z);
   }
-  return m.View();
+  return m;
 }
+
+MapView EdgeOnPair(double min_view_angle) { return EdgeOnPairMapper(min_view_angle, core::VertexLabel::kCorner)->View(); }
 
 TEST(WallEvidence, PairsSeenEdgeOnGiveNoEvidenceAboveTheMinimumViewAngle) {
   const MapView reference = EdgeOnPair(0.0);
@@ -46,6 +50,14 @@ TEST(WallEvidence, PairsSeenEdgeOnGiveNoEvidenceAboveTheMinimumViewAngle) {
   const MapView view = EdgeOnPair(0.06);
   ASSERT_EQ(view.vertices.size(), 2u);
   EXPECT_TRUE(view.walls.empty()) << "bearings less than 0.06 apart say nothing about a wall";
+}
+
+TEST(Posterior, PairsSeenEdgeOnAddNoEdgeTermAboveTheMinimumViewAngle) {
+  // Labels saying "a wall runs on" or "nothing runs on", and no wall between them (no evidence from pairs
+  // seen edge-on): the edge terms would charge the first for the missing wall in every observation; what
+  // the wall evidence ignores, the posterior must not count either.
+  EXPECT_DOUBLE_EQ(EdgeOnPairMapper(0.06, core::VertexLabel::kCorner)->LogPosterior(),
+                   EdgeOnPairMapper(0.06, core::VertexLabel::kPoint)->LogPosterior());
 }
 
 TEST(Mapper, LogPosteriorIfScoresOtherInclusionsWithoutChangingTheMap) {

@@ -1,0 +1,50 @@
+#include "planning/doorways.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+namespace toponav::planning {
+
+using core::Vec2;
+
+std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tolerance, double min_width,
+                                       double max_width) {
+  std::vector<Doorway> out;
+  for (size_t w = 0; w < view.walls.size(); ++w) {
+    const auto& wall = view.walls[w];
+    const Vec2 d = wall.pb - wall.pa;
+    const double length = core::Distance(wall.pa, wall.pb);
+    if (length < min_width) continue;
+    // (position along the wall, rejected?)
+    std::vector<std::pair<double, bool>> marks{{0.0, false}, {length, false}};
+    for (const auto& v : view.rejected) {
+      const double t = ((v.position - wall.pa).x * d.x + (v.position - wall.pa).y * d.y) / length;
+      if (t > 0 && t < length && core::DistanceToSegment(v.position, {wall.pa, wall.pb}) <= tolerance)
+        marks.push_back({t, true});
+    }
+    std::sort(marks.begin(), marks.end());
+    for (size_t i = 0; i + 1 < marks.size(); ++i) {
+      const double width = marks[i + 1].first - marks[i].first;
+      if (!(marks[i].second || marks[i + 1].second) || width < min_width || width > max_width) continue;
+      out.push_back({wall.pa + d * (marks[i].first / length), wall.pa + d * (marks[i + 1].first / length), int(w)});
+    }
+  }
+  return out;
+}
+
+mapping::MapView WithDoorway(const mapping::MapView& view, const Doorway& doorway) {
+  mapping::MapView v = view;
+  const mapping::MapWall wall = v.walls.at(size_t(doorway.wall));
+  v.walls.erase(v.walls.begin() + doorway.wall);
+  int next_id = INT_MIN / 2;  // ids no map vertex has
+  for (const auto& x : v.vertices) next_id = std::max(next_id, x.id);
+  const int ja = next_id + 1, jb = next_id + 2;
+  v.vertices.push_back({ja, doorway.a, {}, 0});
+  v.vertices.push_back({jb, doorway.b, {}, 0});
+  if (core::Distance(wall.pa, doorway.a) > 1e-6) v.walls.push_back({wall.a, ja, wall.pa, doorway.a, wall.probability});
+  if (core::Distance(doorway.b, wall.pb) > 1e-6) v.walls.push_back({jb, wall.b, doorway.b, wall.pb, wall.probability});
+  return v;
+}
+
+}  // namespace toponav::planning

@@ -1,0 +1,29 @@
+#pragma once
+// Doorway hypotheses.  A map wall with two of the posterior's rejected vertices on it an opening's width
+// apart (or one and the wall's end) is often a wall drawn across an opening whose jambs were seen only from
+// afar: the map's MCMC flips one or two vertices at a time and cannot reach a map that needs the jambs and the
+// corners seen through the opening together.  Where the map seals the goal off, planning through such a
+// doorway and driving up to it decides: through an opening the agent sees the far side from close by; at a
+// true wall it makes no headway and the hypothesis is dropped.
+#include <vector>
+
+#include "core/geometry.h"
+#include "mapping/mapping.h"
+
+namespace toponav::planning {
+
+struct Doorway {
+  core::Vec2 a, b;  // the jambs, on one map wall
+  int wall = 0;     // index of that wall in the view's walls
+  core::Vec2 middle() const { return (a + b) * 0.5; }
+};
+
+// Consecutive points along each map wall -- its ends and the rejected vertices within 'tolerance' of it --
+// between 'min_width' and 'max_width' apart, with at least one rejected vertex of the two.
+std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tolerance, double min_width,
+                                       double max_width);
+
+// The view with the doorway's piece of its wall removed (the jambs become vertices of the two pieces left).
+mapping::MapView WithDoorway(const mapping::MapView& view, const Doorway& doorway);
+
+}  // namespace toponav::planning

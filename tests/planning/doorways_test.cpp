@@ -1,0 +1,58 @@
+#include "planning/doorways.h"
+
+#include <gtest/gtest.h>
+
+#include "planning/navigation.h"
+#include "tests/testing/worlds.h"
+
+namespace toponav::planning {
+namespace {
+
+using core::Vec2;
+
+// A closed room [0, 60] x [0, 40] (walls between its corners, ids 0-3), known inside; 'rejected' vertices
+// the posterior left out.
+mapping::MapView ClosedRoom(const std::vector<Vec2>& rejected) {
+  mapping::MapView v;
+  const std::vector<Vec2> c{{0, 0}, {60, 0}, {60, 40}, {0, 40}};
+  for (size_t i = 0; i < c.size(); ++i) v.vertices.push_back({int(i), c[i], {}, 5});
+  for (int i = 0; i < 4; ++i) v.walls.push_back({i, (i + 1) % 4, c[size_t(i)], c[size_t((i + 1) % 4)], 0.9});
+  v.known_space.push_back({testing::Rect(0, 0, 60, 40), {}});
+  for (size_t i = 0; i < rejected.size(); ++i) v.rejected.push_back({int(10 + i), rejected[i], {}, 6});
+  return v;
+}
+
+TEST(Doorways, TwoRejectedVerticesOnAWallAnOpeningApartAreADoorway) {
+  // Jambs 14 apart on the bottom wall (a little off it, as estimates are), one far off any wall.
+  const auto view = ClosedRoom({{20, 0.5}, {34, -0.5}, {30, 20}});
+  const auto doors = DoorwayHypotheses(view, 2.0, 8.0, 16.0);
+  ASSERT_EQ(doors.size(), 1u);
+  EXPECT_EQ(doors[0].wall, 0);
+  EXPECT_NEAR(doors[0].a.x, 20.0, 1e-9);
+  EXPECT_NEAR(doors[0].b.x, 34.0, 1e-9);
+  EXPECT_NEAR(doors[0].a.y, 0.0, 1e-9) << "the jambs are put on the wall";
+  // From a jamb to the wall's end counts too (here 20 wide: within a 24 bound, not a 16 one).
+  EXPECT_EQ(DoorwayHypotheses(view, 2.0, 8.0, 24.0).size(), 2u);
+  EXPECT_TRUE(DoorwayHypotheses(ClosedRoom({}), 2.0, 8.0, 100.0).empty()) << "no rejected vertex, no doorway";
+  EXPECT_TRUE(DoorwayHypotheses(ClosedRoom({{20, 3}, {34, 3}}), 2.0, 8.0, 16.0).empty())
+      << "vertices farther than the tolerance from the wall are not on it";
+}
+
+TEST(Doorways, APathLeadsThroughTheDoorwayOutOfASealedRoom) {
+  const auto view = ClosedRoom({{20, 0.5}, {34, -0.5}});
+  PlannerOptions o;
+  o.inflation_radius = 2.0;
+  o.clearance = 1.0;
+  const Vec2 agent{27, 20}, goal{27, -30};
+  EXPECT_FALSE(VisibilityGraph(view, o, false).Plan(agent, goal)) << "the room is sealed";
+  const auto doors = DoorwayHypotheses(view, 2.0, 8.0, 16.0);
+  ASSERT_EQ(doors.size(), 1u);
+  const mapping::MapView open = WithDoorway(view, doors[0]);
+  EXPECT_EQ(open.walls.size(), view.walls.size() + 1) << "the wall split in two around the doorway";
+  const Path p = VisibilityGraph(open, o, false).Plan(agent, goal);
+  ASSERT_TRUE(p);
+  EXPECT_NEAR(p.cost, 50.0, 1.0) << "straight down through the doorway";
+}
+
+}  // namespace
+}  // namespace toponav::planning
