@@ -181,8 +181,10 @@ class NavigationPolicy : public AgentPolicy {
   core::Aabb2 region_;
   NavigationOptions options_;
   planning::PlannerOptions planning_;
-  std::unique_ptr<planning::Planner> planner_;
+  // Declared before planner_, whose initializer sets it: a member declared after would be reset to nullptr by
+  // its own initializer once planner_ was built (and the network's estimates never reached the planner).
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
+  std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
   double give_up_reach_, probe_radius_;
   planning::GivenUpFrontiers blocked_;

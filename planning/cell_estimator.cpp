@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <unordered_set>
 
 #include "core/error.h"
 #include "core/range_bearing_grid.h"
@@ -20,6 +21,12 @@ int Channel(const core::CellGrid& g, const std::string& name) {
   return int(it - g.channels.begin());
 }
 
+// The world cell (of side 'cell') holding p, as one key.
+uint64_t PlaceKey(const Vec2& p, double cell) {
+  const auto x = int64_t(std::floor(p.x / cell)), y = int64_t(std::floor(p.y / cell));
+  return (uint64_t(uint32_t(int32_t(x))) << 32) | uint64_t(uint32_t(int32_t(y)));
+}
+
 }  // namespace
 
 void CellAveragingEstimator::Observe(const core::Observation& z) {
@@ -28,31 +35,47 @@ void CellAveragingEstimator::Observe(const core::Observation& z) {
   if (g.rows <= 0 || g.cols <= 0 || !(g.max_range > 0) ||
       g.values.size() != size_t(g.rows) * size_t(g.cols) * g.channels.size())
     throw core::DataError("<observation>", "its cell grid's size does not match its rows, columns and channels");
-  seen_.push_back({z.pose, g, Channel(g, "ps"), Channel(g, "delta_success"), Channel(g, "exploration")});
-  while (int(seen_.size()) > history_) seen_.pop_front();
+  pending_.push_back({z.pose, g, Channel(g, "ps"), Channel(g, "delta_success"), Channel(g, "exploration")});
+  while (int(pending_.size()) > max_pending_) pending_.pop_front();
+  ++observed_;
+}
+
+void CellAveragingEstimator::Accumulate(const Seen& s, const SubgoalGrid& grid) {
+  const core::RangeBearingGrid rb{s.cells.rows, s.cells.cols, s.cells.max_range};
+  std::unordered_set<uint64_t> done;  // a place counts once per observation
+  for (size_t f = 0; f < grid.num_frontiers(); ++f)
+    for (int c : grid.cells(f)) {
+      const Vec2 p = grid.raster().Center(c);
+      const double range = core::Distance(p, s.pose.position());
+      if (range >= rb.max_range || !grid.SightClear(s.pose.position(), p)) continue;
+      const uint64_t key = PlaceKey(p, grid.raster().cell);
+      if (!done.insert(key).second) continue;
+      const int row = rb.RangeRow(range);
+      const int col = rb.BearingCol(core::WrapAngle(std::atan2(p.y - s.pose.y, p.x - s.pose.x) - s.pose.yaw));
+      Sum& sum = sums_[key];
+      sum.ps += s.cells.at(row, col, s.ps);
+      sum.delta_success += s.cells.at(row, col, s.delta_success);
+      sum.exploration += s.cells.at(row, col, s.exploration);
+      ++sum.count;
+    }
 }
 
 std::vector<SubgoalProperties> CellAveragingEstimator::Estimate(const SubgoalGrid& grid, const OrderingProblem& distances) {
+  for (const Seen& s : pending_) Accumulate(s, grid);
+  pending_.clear();
   const size_t n = distances.properties.size();
   std::vector<SubgoalProperties> out(n);
   for (size_t f = 0; f < n; ++f) {
-    double ps = 0, ds = 0, re = 0;
-    int count = 0;
-    for (const Seen& s : seen_) {
-      const core::RangeBearingGrid rb{s.cells.rows, s.cells.cols, s.cells.max_range};
-      for (int c : grid.cells(f)) {
-        const Vec2 p = grid.raster().Center(c);
-        const double range = core::Distance(p, s.pose.position());
-        if (range >= rb.max_range || !grid.SightClear(s.pose.position(), p)) continue;
-        const int row = rb.RangeRow(range);
-        const int col = rb.BearingCol(core::WrapAngle(std::atan2(p.y - s.pose.y, p.x - s.pose.x) - s.pose.yaw));
-        ps += s.cells.at(row, col, s.ps);
-        ds += s.cells.at(row, col, s.delta_success);
-        re += s.cells.at(row, col, s.exploration);
-        ++count;
-      }
+    Sum total;
+    for (int c : grid.cells(f)) {
+      const auto it = sums_.find(PlaceKey(grid.raster().Center(c), grid.raster().cell));
+      if (it == sums_.end()) continue;
+      total.ps += it->second.ps;
+      total.delta_success += it->second.delta_success;
+      total.exploration += it->second.exploration;
+      total.count += it->second.count;
     }
-    if (count > 0) out[f] = {ps / count, ds / count, re / count};
+    if (total.count > 0) out[f] = {total.ps / total.count, total.delta_success / total.count, total.exploration / total.count};
   }
   return out;
 }

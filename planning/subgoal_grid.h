@@ -33,6 +33,7 @@ class SubgoalGrid {
   const Raster& raster() const { return raster_; }
   const std::vector<char>& known() const { return known_; }
   const std::vector<int>& cells(size_t f) const { return cells_[f]; }  // frontier f's unknown cells
+  size_t num_frontiers() const { return cells_.size(); }
   bool goal_known() const;  // the goal's cell is in known space
 
   // d_robot (through known space and frontier cells), d_goal (the optimistic distance: through space that is

@@ -10,6 +10,7 @@
 #include "experiments/datagen.h"
 #include "experiments/sensor_eval.h"
 #include "experiments/subgoal_data.h"
+#include "experiments/subgoal_eval.h"
 #include "experiments/subgoal_export.h"
 #include "learning/trainer.h"
 
@@ -163,9 +164,37 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
 struct EvalSensorArgs {
   std::string config, model, kind = "labyrinth", seeds = "10000-10019", out;
   int samples = 10;
+  bool subgoal = false;
+  int every = 6;
 };
 
+// --subgoal: the network's frontier estimates against the truth along optimistic runs through guided mazes
+// (the config's sensor drives the runs; the model is --model or the config's learned sensor's).
+int RunEvalSubgoal(const EvalSensorArgs& a) {
+  const experiments::Config cfg = LoadOrDefault(a.config);
+  experiments::LearnedSensorOptions model = cfg.sensor.learned;
+  if (!a.model.empty()) model.model = a.model;
+  if (model.model.empty())
+    throw core::ConfigError(a.config.empty() ? "<defaults>" : a.config, "sensor.model", "",
+                            "--subgoal needs a subgoal model: --model, or a config whose sensor is learned");
+  experiments::SubgoalEvalOptions o;
+  o.seeds = experiments::ParseSeeds(a.seeds);
+  o.every = a.every;
+  const auto e = experiments::EvaluateSubgoalEstimates(cfg, model, o, [](int done, int total) {
+    std::cerr << fmt::format("[eval] {}/{} mazes\n", done, total);
+  });
+  fmt::print(
+      "{} mazes (seeds {}), {} samples, {} frontier cells ({:.1f} % with Ps = 1), model {}:\n"
+      "  Ps: AUC {:.3f}, cross-entropy {:.3f}, mean {:.3f} on Ps = 1 cells and {:.3f} on Ps = 0 cells\n"
+      "  success cost: mean |error| {:.1f} (Ps = 1 cells); exploration cost: mean |error| {:.1f} (Ps = 0 cells) "
+      "({:.1f} s)\n",
+      e.mazes, a.seeds, e.examples, e.cells, 100.0 * e.positive_rate(), model.model, e.auc, e.cross_entropy,
+      e.mean_ps_positive, e.mean_ps_negative, e.success_mae, e.exploration_mae, e.seconds);
+  return 0;
+}
+
 int RunEvalSensor(const EvalSensorArgs& a) {
+  if (a.subgoal) return RunEvalSubgoal(a);
   const experiments::Config cfg = LoadWithModel(a.config, a.model);
   experiments::SensorEvalOptions o;
   o.kind = ParseKind(a.kind);
@@ -198,6 +227,12 @@ CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", a->out, "Also write the sensor: block to this YAML file");
+  cmd->add_flag("--subgoal", a->subgoal,
+                "Score a subgoal (LSP) network's frontier estimates instead: Ps AUC, cross-entropy, cost errors along "
+                "optimistic runs through guided mazes --seeds (the config's sensor drives them)");
+  cmd->add_option("--every", a->every, "With --subgoal: a sample every this many steps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   return cmd;
 }
 

@@ -100,5 +100,21 @@ TEST(NavigationTrial, LspWithASensorThatGivesNoSubgoalEstimatesStillReachesTheGo
   EXPECT_FALSE(ParseGoalPlanner("greedy"));
 }
 
+TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
+  // The committed LSP network through the learned sensor: its per-cell outputs reach the planner's estimator
+  // (they once did not -- a member initializer reset the estimator's pointer -- and every frontier kept Ps 1).
+  Config cfg = ExactMazeConfig();
+  cfg.sensor.kind = SensorKind::kLearned;
+  cfg.sensor.learned.model = TOPONAV_SOURCE_DIR "/models/lsp_net_cpu.pt";
+  NavigationTrialOptions o;
+  o.planner = GoalPlanner::kLsp;
+  o.max_steps = 8;
+  const NavigationResult r = RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, {}, 7004), cfg, o, 1);
+  ASSERT_FALSE(r.frontier_ps.empty());
+  bool estimated = false;
+  for (const auto& [id, ps] : r.frontier_ps) estimated = estimated || ps < 0.99;
+  EXPECT_TRUE(estimated) << "every frontier kept the optimistic default";
+}
+
 }  // namespace
 }  // namespace toponav::experiments

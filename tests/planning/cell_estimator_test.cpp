@@ -62,18 +62,41 @@ TEST(CellAveragingEstimator, AveragesEachFrontiersCellsOverTheObservationsThatSe
   EXPECT_EQ(e.observations(), 3u);
 }
 
-TEST(CellAveragingEstimator, KeepsOnlyGridsWithTheThreeChannelsAndARecentHistory) {
-  CellAveragingEstimator e(2);
+TEST(CellAveragingEstimator, KeepsOnlyGridsWithTheThreeChannels) {
+  CellAveragingEstimator e;
   e.Observe(core::Observation{});  // no cells (the noisy sensor): ignored
   EXPECT_EQ(e.observations(), 0u);
   core::Observation z = Observed({7, 7, 0.0}, 0.5f, 0.5f, 1.0f);
   for (int i = 0; i < 3; ++i) e.Observe(z);
-  EXPECT_EQ(e.observations(), 2u);
+  EXPECT_EQ(e.observations(), 3u);
   z.cells.channels[1] = "logit";
   EXPECT_THROW(e.Observe(z), core::DataError);
   z = Observed({7, 7, 0.0}, 0.5f, 0.5f, 1.0f);
   z.cells.values.pop_back();
   EXPECT_THROW(e.Observe(z), core::DataError);
+}
+
+TEST(CellAveragingEstimator, AnEstimateSettlesAsObservationsAccumulate) {
+  const Scene s;
+  const core::World w = ::toponav::testing::DeadEndMaze();
+  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  const OrderingProblem d = grid.Distances();
+  const core::Pose2 up{7, 7, core::kPi / 2};
+  CellAveragingEstimator e(4);
+  for (int i = 0; i < 9; ++i) {
+    e.Observe(Observed(up, 0.9f, 0.1f, 50.0f));
+    e.Estimate(grid, d);
+  }
+  e.Observe(Observed(up, 0.1f, 0.1f, 50.0f));
+  EXPECT_NEAR(e.Estimate(grid, d)[1].ps, 0.82, 1e-6) << "one odd view among ten moves it a tenth of the way";
+  // Observations between two estimates all count (up to 'pending', the latest ones).
+  for (int i = 0; i < 6; ++i) e.Observe(Observed(up, 0.1f, 0.1f, 50.0f));
+  EXPECT_NEAR(e.Estimate(grid, d)[1].ps, (8.1 + 0.1 + 4 * 0.1) / 14, 1e-6);
+  // The same place under another frontier grid (the map's frontier grew a little): the sums stay.
+  mapping::MapView grown = s.view;
+  grown.frontiers[1].id = 9;
+  const SubgoalGrid regrid(grown, testing::FrontiersOf(grown), w.start.position(), w.goal, 1.0, w.bounds);
+  EXPECT_NEAR(e.Estimate(regrid, regrid.Distances())[1].ps, (8.1 + 0.1 + 4 * 0.1) / 14, 1e-6);
 }
 
 }  // namespace

@@ -1,0 +1,114 @@
+#include "experiments/subgoal_eval.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.h"
+#include "core/subgoal_labels.h"
+#include "experiments/subgoal_data.h"
+#include "sim/worlds.h"
+
+namespace toponav::experiments {
+
+double RocAuc(const std::vector<float>& scores, const std::vector<bool>& positive) {
+  TOPONAV_CHECK(scores.size() == positive.size(), "scores and flags differ in length");
+  std::vector<size_t> order(scores.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return scores[a] < scores[b]; });
+  double rank_sum = 0.0;  // of the positives, ranks from 1, ties averaged
+  size_t pos = 0;
+  for (size_t i = 0; i < order.size();) {
+    size_t j = i;
+    while (j < order.size() && scores[order[j]] == scores[order[i]]) ++j;
+    const double rank = 0.5 * double(i + 1 + j);
+    for (size_t k = i; k < j; ++k)
+      if (positive[order[k]]) rank_sum += rank, ++pos;
+    i = j;
+  }
+  const size_t neg = scores.size() - pos;
+  if (pos == 0 || neg == 0) return 0.5;
+  return (rank_sum - 0.5 * double(pos) * double(pos + 1)) / (double(pos) * double(neg));
+}
+
+namespace {
+
+int Channel(const core::CellGrid& cells, const std::string& name, const std::string& model) {
+  const auto it = std::find(cells.channels.begin(), cells.channels.end(), name);
+  if (it == cells.channels.end())
+    throw core::ConfigError("<sensor>", "sensor.model", model, "gives no '" + name + "' cells: not a subgoal model");
+  return int(it - cells.channels.begin());
+}
+
+// Accumulates one sample's frontier cells.
+struct Tally {
+  std::string model;
+  std::vector<float> ps;
+  std::vector<bool> positive;
+  double cross_entropy = 0, ps_pos = 0, ps_neg = 0, success = 0, exploration = 0;
+
+  void Add(const core::CellGrid& out, const core::SubgoalLabelGrid& truth) {
+    const int cp = Channel(out, "ps", model), cs = Channel(out, "delta_success", model);
+    const int ce = Channel(out, "exploration", model);
+    TOPONAV_CHECK(out.rows == truth.grid.rows && out.cols == truth.grid.cols,
+                  "network grid " << out.rows << "x" << out.cols << " vs labels " << truth.grid.rows << "x" << truth.grid.cols);
+    for (size_t i = 0; i < truth.mask.size(); ++i) {
+      if (!truth.mask[i]) continue;
+      const int r = int(i) / out.cols, c = int(i) % out.cols;
+      const double p = std::clamp(double(out.at(r, c, cp)), 1e-6, 1.0 - 1e-6);
+      const bool y = truth.ps[i] > 0.5;
+      ps.push_back(float(p));
+      positive.push_back(y);
+      cross_entropy -= y ? std::log(p) : std::log(1.0 - p);
+      (y ? ps_pos : ps_neg) += p;
+      if (y) success += std::abs(out.at(r, c, cs) - truth.delta_success[i]);
+      else exploration += std::abs(out.at(r, c, ce) - truth.exploration[i]);
+    }
+  }
+
+  SubgoalEval Summary() const {
+    SubgoalEval e;
+    e.cells = ps.size();
+    e.positives = size_t(std::count(positive.begin(), positive.end(), true));
+    const size_t neg = e.cells - e.positives;
+    e.auc = RocAuc(ps, positive);
+    e.cross_entropy = e.cells ? cross_entropy / double(e.cells) : 0.0;
+    e.mean_ps_positive = e.positives ? ps_pos / double(e.positives) : 0.0;
+    e.mean_ps_negative = neg ? ps_neg / double(neg) : 0.0;
+    e.success_mae = e.positives ? success / double(e.positives) : 0.0;
+    e.exploration_mae = neg ? exploration / double(neg) : 0.0;
+    return e;
+  }
+};
+
+}  // namespace
+
+SubgoalEval EvaluateSubgoalEstimates(const Config& config, const LearnedSensorOptions& model,
+                                     const SubgoalEvalOptions& options, const std::function<void(int, int)>& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SensorConfig learned;
+  learned.kind = SensorKind::kLearned;
+  learned.learned = model;
+  learned.Validate();
+  Tally tally;
+  tally.model = model.model;
+  int examples = 0;
+  for (size_t k = 0; k < options.seeds.size(); ++k) {
+    const uint64_t seed = options.seeds[k];
+    const core::World maze = sim::GenerateWorld(core::WorldKind::kGuidedMaze, config.worlds, seed);
+    const auto sensor = CreateSensor(learned, {&maze, config.render, maze.goal, seed});
+    for (const SubgoalSample& s : CollectSubgoalSamples(maze, config, seed, options.every, core::kSubgoalGrid)) {
+      tally.Add(sensor->Observe(s.pose, 0).cells, s.labels);
+      ++examples;
+    }
+    if (progress) progress(int(k + 1), int(options.seeds.size()));
+  }
+  SubgoalEval e = tally.Summary();
+  e.mazes = int(options.seeds.size());
+  e.examples = examples;
+  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return e;
+}
+
+}  // namespace toponav::experiments

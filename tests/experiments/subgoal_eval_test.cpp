@@ -1,0 +1,43 @@
+#include "experiments/subgoal_eval.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace toponav::experiments {
+namespace {
+
+TEST(RocAuc, RanksPositivesAboveNegatives) {
+  EXPECT_DOUBLE_EQ(RocAuc({0.1f, 0.2f, 0.8f, 0.9f}, {false, false, true, true}), 1.0);
+  EXPECT_DOUBLE_EQ(RocAuc({0.1f, 0.2f, 0.8f, 0.9f}, {true, true, false, false}), 0.0);
+  EXPECT_DOUBLE_EQ(RocAuc({0.1f, 0.4f, 0.35f, 0.8f}, {false, false, true, true}), 0.75);
+  EXPECT_DOUBLE_EQ(RocAuc({0.5f, 0.5f, 0.5f}, {true, false, false}), 0.5) << "ties count half";
+  EXPECT_DOUBLE_EQ(RocAuc({0.3f, 0.7f}, {true, true}), 0.5) << "one class only";
+}
+
+TEST(SubgoalEval, ScoresTheCommittedNetworkOnAMaze) {
+  Config config;
+  config.planning.frontier_row_gap = 10;
+  LearnedSensorOptions model;
+  model.model = TOPONAV_SOURCE_DIR "/models/lsp_net_cpu.pt";
+  SubgoalEvalOptions o;
+  o.seeds = {7003};
+  o.every = 10;
+  const SubgoalEval e = EvaluateSubgoalEstimates(config, model, o);
+  EXPECT_EQ(e.mazes, 1);
+  ASSERT_GT(e.examples, 0);
+  ASSERT_GT(e.cells, 0u);
+  EXPECT_LE(e.positives, e.cells);
+  EXPECT_GE(e.auc, 0.0);
+  EXPECT_LE(e.auc, 1.0);
+  EXPECT_GT(e.cross_entropy, 0.0);
+  for (double p : {e.mean_ps_positive, e.mean_ps_negative}) {
+    EXPECT_GE(p, 0.0);
+    EXPECT_LE(p, 1.0);
+  }
+  model.model = TOPONAV_SOURCE_DIR "/models/vertex_net_cpu.pt";
+  EXPECT_THROW(EvaluateSubgoalEstimates(config, model, o), core::ConfigError) << "a vertex model has no subgoal cells";
+}
+
+}  // namespace
+}  // namespace toponav::experiments
