@@ -224,7 +224,7 @@ expect_contains("${OUT}" "planner lsp")
 # eval-sensor --subgoal: the trained network's frontier estimates scored along an optimistic maze run
 run(0 ${TOPONAV} eval-sensor --subgoal --config ${WORK}/lsp.yaml --model ${WORK}/lsp_train/model.pt --seeds 7003-7003 --every 25)
 expect_contains("${OUT}" "Ps: AUC")
-run(1 ${TOPONAV} eval-sensor --subgoal --config ${WORK}/lsp.yaml --model ${SOURCE_DIR}/models/vertex_net_cpu.pt --seeds 7003-7003 --every 25)
+run(2 ${TOPONAV} eval-sensor --subgoal --config ${WORK}/lsp.yaml --model ${SOURCE_DIR}/models/vertex_net_cpu.pt --seeds 7003-7003 --every 25)
 expect_contains("${ERR}" "not a subgoal model")
 # eval-sensor: the trained model's scores, and a calibrated noisy-sensor block that is itself a valid config
 run(0 ${TOPONAV} eval-sensor --model ${WORK}/train/model.pt --kind labyrinth --seeds 100-100 --samples-per-world 2 --out ${WORK}/calibrated.yaml)
