@@ -1,8 +1,14 @@
 #include "core/observation.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace toponav::core {
+
+int CellGrid::Channel(const std::string& name) const {
+  const auto it = std::find(channels.begin(), channels.end(), name);
+  return it == channels.end() ? -1 : int(it - channels.begin());
+}
 
 LabelProbs OneHot(VertexLabel label) {
   LabelProbs p{0, 0, 0, 0};

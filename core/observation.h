@@ -43,6 +43,7 @@ struct CellGrid {
   std::vector<std::string> channels;  // what each channel holds (e.g. frontier properties)
   std::vector<float> values;
   bool empty() const { return values.empty(); }
+  int Channel(const std::string& name) const;  // the index of the channel so named, -1 if none
   // Requires values.size() == rows * cols * channels.size().
   float at(int row, int col, int channel) const {
     return values.at((size_t(row) * size_t(cols) + size_t(col)) * channels.size() + size_t(channel));

@@ -83,9 +83,7 @@ class NavigationPolicy : public AgentPolicy {
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
-        give_up_reach_(config.search.give_up_reach),
-        probe_radius_(config.search.give_up_probe_radius),
-        blocked_(give_up_reach_, probe_radius_),
+        blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         block_reach_(config.search.give_up_distance),
         inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
 
@@ -150,7 +148,7 @@ class NavigationPolicy : public AgentPolicy {
     planning::FrontierChoice c = ThroughDoorway(view, at);
     if (c.status == planning::PlanStatus::kFound) return c;
     if (blocked_.given_up() > 0) {
-      blocked_ = planning::GivenUpFrontiers(give_up_reach_, probe_radius_);
+      blocked_.Clear();
       return c;
     }
     return inspector_.Choose(map, graph, at, goal_, targets);
@@ -186,7 +184,6 @@ class NavigationPolicy : public AgentPolicy {
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
-  double give_up_reach_, probe_radius_;
   planning::GivenUpFrontiers blocked_;
   double block_reach_;
   planning::SuspectInspector inspector_;

@@ -35,10 +35,9 @@ double RocAuc(const std::vector<float>& scores, const std::vector<bool>& positiv
 namespace {
 
 int Channel(const core::CellGrid& cells, const std::string& name, const std::string& model) {
-  const auto it = std::find(cells.channels.begin(), cells.channels.end(), name);
-  if (it == cells.channels.end())
-    throw core::ConfigError("<sensor>", "sensor.model", model, "gives no '" + name + "' cells: not a subgoal model");
-  return int(it - cells.channels.begin());
+  const int c = cells.Channel(name);
+  if (c < 0) throw core::ConfigError("<sensor>", "sensor.model", model, "gives no '" + name + "' cells: not a subgoal model");
+  return c;
 }
 
 // Accumulates one sample's frontier cells.

@@ -16,9 +16,9 @@ using core::Vec2;
 namespace {
 
 int Channel(const core::CellGrid& g, const std::string& name) {
-  const auto it = std::find(g.channels.begin(), g.channels.end(), name);
-  if (it == g.channels.end()) throw core::DataError("<observation>", "its cell grid has no channel '" + name + "'");
-  return int(it - g.channels.begin());
+  const int c = g.Channel(name);
+  if (c < 0) throw core::DataError("<observation>", "its cell grid has no channel '" + name + "'");
+  return c;
 }
 
 // The world cell (of side 'cell') holding p, as one key.

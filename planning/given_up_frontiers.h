@@ -25,6 +25,8 @@ class GivenUpFrontiers {
   // returns the ids taken back.
   std::vector<int> Update(const std::vector<mapping::Frontier>& frontiers);
   bool Contains(int id) const { return ids_.count(id) > 0; }
+  // Takes every frontier back (they were guesses: a goal-directed agent whose map is sealed retries them).
+  void Clear() { *this = GivenUpFrontiers(reach_, probe_radius_); }
   int given_up() const { return given_up_; }  // frontiers given up with GiveUp (not counting re-created ones)
   const std::vector<core::Segment2>& probed() const { return edges_; }  // where given-up frontiers were probed
 

@@ -31,15 +31,11 @@ void PlannerOptions::Validate() const {
     throw core::ConfigError("<options>", "planning.clearance", std::to_string(clearance), "must be < inflation_radius");
 }
 
-namespace {
-
 bool InKnown(const mapping::MapView& view, const Vec2& p) {
   for (const auto& poly : view.known_space)
     if (core::Contains(poly, p)) return true;
   return false;
 }
-
-}  // namespace
 
 VisibilityGraph::VisibilityGraph(const mapping::MapView& view, const PlannerOptions& options, bool require_known)
     : view_(&view), options_(options), require_known_(require_known) {

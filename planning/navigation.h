@@ -66,6 +66,9 @@ class VisibilityGraph {
   Graph graph_;
 };
 
+// True if p lies in the view's known space (its double-precision polygons, as the graph's rules use them).
+bool InKnown(const mapping::MapView& view, const core::Vec2& p);
+
 // Where an agent goes to explore a frontier: a point 'frontier_setback' inside known space from its midpoint
 // (the midpoint itself where known space is thinner than that).
 struct FrontierTarget {

@@ -92,5 +92,15 @@ TEST(GivenUpFrontiers, AFrontierThatGrowsWellPastWhereItWasGivenUpIsTakenBackOnc
   EXPECT_TRUE(g.Contains(4));
 }
 
+TEST(GivenUpFrontiers, ClearTakesEveryFrontierBack) {
+  GivenUpFrontiers g(3.0);
+  g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 10}})});
+  g.Clear();
+  EXPECT_FALSE(g.Contains(4));
+  EXPECT_EQ(g.given_up(), 0);
+  g.Update({MakeFrontier(9, {{1, 2}, {1, 12}})});
+  EXPECT_FALSE(g.Contains(9)) << "the place is forgotten too";
+}
+
 }  // namespace
 }  // namespace toponav::planning
