@@ -53,6 +53,12 @@ Aabb2 Bounds(const std::vector<Vec2>& points, const Aabb2& start) {
   return b;
 }
 
+double PolylineLength(const std::vector<Vec2>& points) {
+  double length = 0;
+  for (size_t i = 1; i < points.size(); ++i) length += Norm(points[i] - points[i - 1]);
+  return length;
+}
+
 Aabb2 Bounds(const Ring& ring) {
   const double inf = std::numeric_limits<double>::infinity();
   return Bounds(ring, Aabb2{{inf, inf}, {-inf, -inf}});

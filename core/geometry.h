@@ -80,6 +80,7 @@ bool Contains(const Ring& ring, const Vec2& p);  // strict interior (boundary po
 bool Contains(const Polygon& polygon, const Vec2& p);
 Aabb2 Bounds(const Ring& ring);
 Aabb2 Bounds(const std::vector<Vec2>& points, const Aabb2& start);
+double PolylineLength(const std::vector<Vec2>& points);  // summed segment lengths (0 for fewer than 2 points)
 
 double DistanceToSegment(const Vec2& p, const Segment2& s);
 double DistanceToRing(const Vec2& p, const Ring& ring);  // to the boundary

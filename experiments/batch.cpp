@@ -89,6 +89,7 @@ json NavigationJson(const TrialId& id, const NavigationResult& r) {
   j["steps"] = r.steps;
   j["iou"] = r.iou;
   j["distance"] = r.distance;
+  j["shortest"] = r.shortest;
   j["nudges"] = r.nudges;
   j["end_reason"] = r.end_reason;
   j["wall_time_s"] = r.wall_time_s;
@@ -397,6 +398,7 @@ std::optional<TrialRecord> ParseRecord(const std::string& line, std::string* why
     r.steps = j.at("steps").get<int>();
     r.iou = j.at("iou").get<double>();
     r.distance = j.at("distance").get<double>();
+    r.shortest = j.value("shortest", 0.0);
     r.wall_time_s = j.at("wall_time_s").get<double>();
     r.end_reason = j.at("end_reason").get<std::string>();
     return r;

@@ -64,6 +64,7 @@ struct TrialRecord {
   int steps = 0;
   double iou = 0.0;
   double distance = 0.0;    // summed over agents (a navigation trial's cost)
+  double shortest = 0.0;    // a navigation trial: the true world's shortest way (0: not recorded)
   double wall_time_s = 0.0;
   std::string end_reason;
 };

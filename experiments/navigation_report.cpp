@@ -55,6 +55,7 @@ void SetReduction(const std::vector<TrialRecord>& records, NavigationReportRow* 
 
 std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialRecord>& records) {
   std::map<Key, NavigationReportRow> rows;
+  std::map<Key, std::pair<double, double>> detours;  // reached trials with a shortest way: cost, shortest
   for (const auto& r : records) {
     if (r.id.planner.empty()) continue;
     NavigationReportRow& row = rows[RowKey(r)];
@@ -70,6 +71,10 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
     row.mean_steps += r.steps;
     row.mean_iou += r.iou;
     row.mean_wall_s += r.wall_time_s;
+    if (r.success && r.shortest > 0) {
+      detours[RowKey(r)].first += r.distance;
+      detours[RowKey(r)].second += r.shortest;
+    }
   }
   std::vector<NavigationReportRow> out;
   for (auto& [k, row] : rows) {
@@ -81,6 +86,8 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
       row.mean_wall_s /= ok;
     }
     SetReduction(records, &row);
+    const auto d = detours.find(k);
+    row.over_shortest = d == detours.end() ? kNaN : d->second.first / d->second.second;
     out.push_back(row);
   }
   return out;
@@ -89,15 +96,16 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
 std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, const std::vector<TrialRecord>& records) {
   std::ostringstream os;
   os << "| environment | planner | reached goal | mean cost | total cost | reduction vs optimistic | median cost ratio "
-        "| mean steps | mean IoU | failed runs | s/trial |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| cost / shortest | mean steps | mean IoU | failed runs | s/trial |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
-    char reduction[64] = "-", ratio[32] = "-";
+    char reduction[64] = "-", ratio[32] = "-", detour[32] = "-";
     if (!std::isnan(r.reduction)) std::snprintf(reduction, sizeof reduction, "%.1f %% (%d seeds)", 100 * r.reduction, r.paired);
     if (!std::isnan(r.median_ratio)) std::snprintf(ratio, sizeof ratio, "%.3f", r.median_ratio);
+    if (!std::isnan(r.over_shortest)) std::snprintf(detour, sizeof detour, "%.3f", r.over_shortest);
     char buf[400];
-    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %.1f | %.4f | %d | %.1f |\n",
+    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %s | %.1f | %.4f | %d | %.1f |\n",
                   core::ToString(r.kind), r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction, ratio,
-                  r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s);
+                  detour, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s);
     os << buf;
   }
   std::vector<std::string> short_of_goal;
@@ -113,13 +121,12 @@ std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, con
 
 std::string NavigationCsv(const std::vector<NavigationReportRow>& rows) {
   std::ostringstream os;
-  os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,median_ratio,mean_steps,mean_iou,"
-        "mean_wall_s\n";
+  os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,median_ratio,over_shortest,mean_steps,"
+        "mean_iou,mean_wall_s\n";
   for (const auto& r : rows)
     os << core::ToString(r.kind) << "," << r.planner << "," << r.trials << "," << r.reached << "," << r.failed << ","
        << r.mean_cost << "," << r.total_cost << "," << r.reduction << "," << r.paired << "," << r.median_ratio << ","
-       << r.mean_steps << ","
-       << r.mean_iou << "," << r.mean_wall_s << "\n";
+       << r.over_shortest << "," << r.mean_steps << "," << r.mean_iou << "," << r.mean_wall_s << "\n";
   return os.str();
 }
 

@@ -20,6 +20,9 @@ struct NavigationReportRow {
   int paired = 0;                           // seeds the reduction is over
   double median_ratio = 0.0;                // median over those seeds of planner cost / optimistic cost (NaN as above)
   double mean_steps = 0.0, mean_iou = 0.0, mean_wall_s = 0.0;
+  // Over the trials that reached the goal: total cost / total true shortest way (1: no detour; NaN where the
+  // records have no shortest way).
+  double over_shortest = 0.0;
 };
 
 // Rows for the records that name a planner, by kind then planner (optimistic first).

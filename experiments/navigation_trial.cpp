@@ -15,6 +15,7 @@
 #include "planning/lsp_planner.h"
 #include "planning/map_suspects.h"
 #include "planning/search_policy.h"
+#include "sim/paths.h"
 
 namespace toponav::experiments {
 
@@ -232,6 +233,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   r.reached = r.end_reason == "goal";
   r.steps = loop.steps;
   r.distance = loop.distance.at(0);
+  r.shortest = core::PolylineLength(sim::FreePath(world, world.start.position(), world.goal, config.lsp.clearance, config.lsp.cell));
   r.nudges = policy.nudges();
   r.path = loop.paths.at(0);
   r.frontier_ps = policy.estimates();

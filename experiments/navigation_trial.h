@@ -47,6 +47,9 @@ struct NavigationResult {
   bool reached = false;           // within navigation.goal_radius of the goal
   int steps = 0;
   double distance = 0.0;          // travelled: the trial's cost
+  // The true world's shortest way from start to goal (lsp.clearance from walls, on the lsp.cell raster): what a
+  // planner that knew the maze would travel.  0 where the true world has none.
+  double shortest = 0.0;
   std::string end_reason;         // "goal", "stuck", "cut_off" (no way to the goal, nothing to explore), "step_cap"
   int nudges = 0;
   double iou = 0.0;               // known space of the final map vs the true free space

@@ -103,18 +103,12 @@ std::vector<core::Vec2> PathToGoal(const core::World& w, const experiments::Conf
   return path;
 }
 
-double PathLength(const std::vector<core::Vec2>& path) {
-  double length = 0;
-  for (size_t i = 1; i < path.size(); ++i) length += core::Norm(path[i] - path[i - 1]);
-  return length;
-}
-
 // A recording along the path to the goal: --poses panoramas, or one every --spacing units (default: the
 // motion step).
 int RenderSequence(const RenderArgs& a, const core::World& w, const experiments::Config& cfg, const sim::Renderer& renderer) {
   const auto path = PathToGoal(w, cfg);
   const double spacing = a.spacing > 0 ? a.spacing : cfg.motion.step_length;
-  const int count = a.poses > 0 ? a.poses : 1 + int(std::ceil(PathLength(path) / spacing));
+  const int count = a.poses > 0 ? a.poses : 1 + int(std::ceil(core::PolylineLength(path) / spacing));
   const auto poses = sim::PosesAlong(path, count);
   std::vector<core::Panorama> panos;
   const auto t0 = Clock::now();

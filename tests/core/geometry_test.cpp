@@ -66,6 +66,12 @@ TEST(Geometry, NearRingAgreesWithDistanceToRing) {
   EXPECT_GT(near, 100);
 }
 
+TEST(Geometry, PolylineLengthSumsSegments) {
+  EXPECT_EQ(PolylineLength({}), 0.0);
+  EXPECT_EQ(PolylineLength({{1, 1}}), 0.0);
+  EXPECT_DOUBLE_EQ(PolylineLength({{0, 0}, {3, 4}, {3, 10}}), 11.0);
+}
+
 TEST(Geometry, WrapAngleMapsIntoHalfOpenRange) {
   EXPECT_NEAR(WrapAngle(3 * kPi), -kPi, 1e-12);
   EXPECT_NEAR(WrapAngle(-kPi / 2), -kPi / 2, 1e-12);
