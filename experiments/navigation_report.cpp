@@ -165,8 +165,9 @@ void WriteCostScatter(const std::vector<TrialRecord>& records, const std::string
         max_cost = std::max({max_cost, base.at(seed), cost});
       }
     char title[160];
-    std::snprintf(title, sizeof title, "%s: %s cost (y) vs optimistic (x), %.1f %% less", core::ToString(row.kind),
-                  row.planner.c_str(), std::isnan(row.reduction) ? 0.0 : 100 * row.reduction);
+    const double reduction = std::isnan(row.reduction) ? 0.0 : row.reduction;
+    std::snprintf(title, sizeof title, "%s: %s cost (y) vs optimistic (x), %.1f %% %s", core::ToString(row.kind),
+                  row.planner.c_str(), 100 * std::abs(reduction), reduction < 0 ? "more" : "less");
     panels.push_back({title, points});
   }
   if (panels.empty()) return;

@@ -45,6 +45,7 @@ struct Tally {
   std::string model;
   std::vector<float> ps;
   std::vector<bool> positive;
+  std::vector<int> band;  // per cell: its range band (SubgoalEval::kBandEdges)
   double cross_entropy = 0, ps_pos = 0, ps_neg = 0, success = 0, exploration = 0;
 
   void Add(const core::CellGrid& out, const core::SubgoalLabelGrid& truth) {
@@ -57,8 +58,10 @@ struct Tally {
       const int r = int(i) / out.cols, c = int(i) % out.cols;
       const double p = std::clamp(double(out.at(r, c, cp)), 1e-6, 1.0 - 1e-6);
       const bool y = truth.ps[i] > 0.5;
+      const double range = truth.grid.RowRange(r);
       ps.push_back(float(p));
       positive.push_back(y);
+      band.push_back(range < SubgoalEval::kBandEdges[0] ? 0 : range < SubgoalEval::kBandEdges[1] ? 1 : 2);
       cross_entropy -= y ? std::log(p) : std::log(1.0 - p);
       (y ? ps_pos : ps_neg) += p;
       if (y) success += std::abs(out.at(r, c, cs) - truth.delta_success[i]);
@@ -77,6 +80,14 @@ struct Tally {
     e.mean_ps_negative = neg ? ps_neg / double(neg) : 0.0;
     e.success_mae = e.positives ? success / double(e.positives) : 0.0;
     e.exploration_mae = neg ? exploration / double(neg) : 0.0;
+    for (int b = 0; b < 3; ++b) {
+      std::vector<float> scores;
+      std::vector<bool> flags;
+      for (size_t i = 0; i < ps.size(); ++i)
+        if (band[i] == b) scores.push_back(ps[i]), flags.push_back(positive[i]);
+      e.band_auc[b] = RocAuc(scores, flags);
+      e.band_cells[b] = scores.size();
+    }
     return e;
   }
 };

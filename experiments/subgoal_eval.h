@@ -26,6 +26,11 @@ struct SubgoalEval {
   double mean_ps_positive = 0.0, mean_ps_negative = 0.0;
   double success_mae = 0.0;          // mean |error| of the success cost over positive cells
   double exploration_mae = 0.0;      // ... of the exploration cost over negative cells
+  // The Ps AUC of the cells nearer than 20, from 20 to 40, and farther than 40 (world units) from the pose,
+  // with their counts: how quality falls with range.
+  static constexpr double kBandEdges[2] = {20.0, 40.0};
+  double band_auc[3] = {0.5, 0.5, 0.5};
+  size_t band_cells[3] = {0, 0, 0};
   double seconds = 0.0;
   double positive_rate() const { return cells > 0 ? double(positives) / double(cells) : 0.0; }
 };

@@ -187,9 +187,12 @@ int RunEvalSubgoal(const EvalSensorArgs& a) {
       "{} mazes (seeds {}), {} samples, {} frontier cells ({:.1f} % with Ps = 1), model {}:\n"
       "  Ps: AUC {:.3f}, cross-entropy {:.3f}, mean {:.3f} on Ps = 1 cells and {:.3f} on Ps = 0 cells\n"
       "  success cost: mean |error| {:.1f} (Ps = 1 cells); exploration cost: mean |error| {:.1f} (Ps = 0 cells) "
-      "({:.1f} s)\n",
+      "({:.1f} s)\n"
+      "  Ps AUC by range: {:.3f} nearer than {} ({} cells), {:.3f} up to {} ({}), {:.3f} farther ({})\n",
       e.mazes, a.seeds, e.examples, e.cells, 100.0 * e.positive_rate(), model.model, e.auc, e.cross_entropy,
-      e.mean_ps_positive, e.mean_ps_negative, e.success_mae, e.exploration_mae, e.seconds);
+      e.mean_ps_positive, e.mean_ps_negative, e.success_mae, e.exploration_mae, e.seconds, e.band_auc[0],
+      experiments::SubgoalEval::kBandEdges[0], e.band_cells[0], e.band_auc[1], experiments::SubgoalEval::kBandEdges[1],
+      e.band_cells[1], e.band_auc[2], e.band_cells[2]);
   return 0;
 }
 

@@ -31,6 +31,11 @@ TEST(SubgoalEval, ScoresTheCommittedNetworkOnAMaze) {
   EXPECT_GE(e.auc, 0.0);
   EXPECT_LE(e.auc, 1.0);
   EXPECT_GT(e.cross_entropy, 0.0);
+  EXPECT_EQ(e.band_cells[0] + e.band_cells[1] + e.band_cells[2], e.cells) << "every cell in one range band";
+  for (double auc : e.band_auc) {
+    EXPECT_GE(auc, 0.0);
+    EXPECT_LE(auc, 1.0);
+  }
   for (double p : {e.mean_ps_positive, e.mean_ps_negative}) {
     EXPECT_GE(p, 0.0);
     EXPECT_LE(p, 1.0);
