@@ -1,9 +1,11 @@
 #include "experiments/map_drive.h"
 
 #include <limits>
+#include <optional>
 
 #include "core/error.h"
 #include "experiments/agent_loop.h"
+#include "experiments/corridor_cuts.h"
 #include "sim/paths.h"
 
 namespace toponav::experiments {
@@ -78,7 +80,8 @@ void ScoreVertices(const core::World& world, MapDriveResult* out) {
   if (matched > 0) r.mean_vertex_error /= matched;
 }
 
-void ScoreWalls(const core::World& world, MapDriveResult* out) {
+// 'radius': the agent's, for walls that cut a corridor.
+void ScoreWalls(const core::World& world, double radius, MapDriveResult* out) {
   MapDriveResult& r = *out;
   // A map wall is true when its ends match (within the radius) the two ends of one true wall.
   const auto rings = core::MapRings(world);
@@ -97,6 +100,7 @@ void ScoreWalls(const core::World& world, MapDriveResult* out) {
     return found;
   };
   r.map_walls = int(r.view.walls.size());
+  std::optional<FreeSpaceRegions> regions;  // made when a wall reaches into free space
   for (const auto& w : r.view.walls) {
     core::VertexRef a, b;
     bool ok = nearest_ref(w.pa, &a) && nearest_ref(w.pb, &b) && a.ring == b.ring;
@@ -111,6 +115,9 @@ void ScoreWalls(const core::World& world, MapDriveResult* out) {
     for (double t = 0; t <= length && !across; t += 1.0)
       across = core::SignedDistance(world, w.pa + (w.pb - w.pa) * (t / std::max(length, 1e-9)), false) > kAcrossDepth;
     r.walls_across_free_space += across;
+    if (!across) continue;
+    if (!regions) regions.emplace(world, radius);
+    r.walls_across_corridor += regions->Cuts({w.pa, w.pb}, kCutMinArea);
   }
 }
 
@@ -131,7 +138,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
   r.log_posterior = loop.mapper->LogPosterior();
   r.known_space_iou = KnownSpaceIoU(world, r.view);
   ScoreVertices(world, &r);
-  ScoreWalls(world, &r);
+  ScoreWalls(world, config.motion.agent_radius, &r);
   return r;
 }
 

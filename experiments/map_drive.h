@@ -32,7 +32,9 @@ struct MapDriveResult {
   int map_walls = 0;
   int false_walls = 0;            // map walls whose ends are not (within the radius) the ends of one true wall
   int walls_across_free_space = 0;  // map walls reaching deeper than kAcrossDepth into true free space (a
-                                    // wall across a corridor or doorway, not a wall a little off its place)
+                                    // wall across a corridor or jutting into one, not one a little off its place)
+  int walls_across_corridor = 0;    // of those, the walls that cut the agent's free space (FreeSpaceRegions:
+                                    // more regions of kCutMinArea or more): across a corridor or a doorway
   double log_posterior = 0.0;     // of the final map
   double mean_update_ms = 0.0;    // Mapper::AddObservation + View (known space, frontiers)
   double mean_mcmc_ms = 0.0;      // Mapper::SampleMostLikelyMap
@@ -40,6 +42,7 @@ struct MapDriveResult {
 
 constexpr double kVertexMatchRadius = 5.0;
 constexpr double kAcrossDepth = 3.0;
+constexpr double kCutMinArea = 100.0;  // square world units: half a guided maze's 14x14 corridor cell
 
 MapDriveResult RunMapDrive(const core::World& world, const Config& config, const MapDriveOptions& options);
 

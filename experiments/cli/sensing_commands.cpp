@@ -231,7 +231,7 @@ int RunMap(MapArgs a) {
   EnsureDir(a.out);
   const std::vector<uint64_t> seeds =
       a.seeds.empty() ? std::vector<uint64_t>{experiments::ParseSeed(a.seed)} : experiments::ParseSeeds(a.seeds);
-  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0, across_sum = 0;
+  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0, across_sum = 0, cut_sum = 0;
   for (uint64_t seed : seeds) {
     WorldSource src = a;
     src.seed = std::to_string(seed);
@@ -254,6 +254,7 @@ int RunMap(MapArgs a) {
     j["map_walls"] = r.map_walls;
     j["false_walls"] = r.false_walls;
     j["walls_across_free_space"] = r.walls_across_free_space;
+    j["walls_across_corridor"] = r.walls_across_corridor;
     j["frontiers"] = r.view.frontiers.size();
     j["log_posterior"] = r.log_posterior;
     j["mean_update_ms"] = r.mean_update_ms;
@@ -261,22 +262,23 @@ int RunMap(MapArgs a) {
     j["wall_time_ms"] = ms;
     WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), j.dump(1) + "\n");
     fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
-               "walls {:>3} ({} false, {} across free space)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
+               "walls {:>3} ({} false, {} into free space, {} across a corridor)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
                seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
-               r.map_walls, r.false_walls, r.walls_across_free_space, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
+               r.map_walls, r.false_walls, r.walls_across_free_space, r.walls_across_corridor, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
     iou_sum += r.known_space_iou;
     false_sum += r.false_vertices;
     error_sum += r.mean_vertex_error * (r.map_vertices - r.false_vertices);  // pooled over matched vertices
     vert_sum += r.map_vertices;
     wall_false += r.false_walls;
     across_sum += r.walls_across_free_space;
+    cut_sum += r.walls_across_corridor;
     wall_sum += r.map_walls;
   }
   if (seeds.size() > 1)
-    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} % ({} across free "
-               "space), vertex error {:.2f}\n",
+    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} % ({} into free space, "
+               "{} across a corridor), vertex error {:.2f}\n",
                seeds.size(), iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
-               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), across_sum,
+               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), across_sum, cut_sum,
                error_sum / std::max(1.0, vert_sum - false_sum));
   return 0;
 }
