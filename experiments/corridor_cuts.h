@@ -7,24 +7,26 @@
 
 #include "core/geometry.h"
 #include "core/world.h"
+#include "planning/raster.h"
 
 namespace toponav::experiments {
 
 class FreeSpaceRegions {
  public:
-  // 'radius': the disc that travels (world units); 'cell': the raster's side.
-  FreeSpaceRegions(const core::World& world, double radius, double cell = 0.5);
-  // The regions of at least 'min_area' (square world units) the disc reaches with the extra walls in place.
-  int Count(const std::vector<core::Segment2>& walls, double min_area) const;
-  // True when the wall raises the count of regions of at least 'min_area'.
-  bool Cuts(const core::Segment2& wall, double min_area) const;
+  // 'radius': the disc that travels (world units); regions count from 'min_area' (square world units);
+  // 'cell': the raster's side.
+  FreeSpaceRegions(const core::World& world, double radius, double min_area, double cell = 0.5);
+  // The regions the disc reaches with the extra walls in place.
+  int Count(const std::vector<core::Segment2>& walls) const;
+  // True when the wall raises the count.
+  bool Cuts(const core::Segment2& wall) const { return Count({wall}) > regions_; }
 
  private:
-  core::Vec2 Center(int col, int row) const;
-  double radius_, cell_;
-  core::Vec2 origin_;
-  int cols_ = 0, rows_ = 0;
-  std::vector<char> free_;  // row-major: the disc's centre may be here
+  double radius_;
+  size_t min_cells_;
+  planning::Raster raster_;
+  std::vector<char> free_;  // the disc's centre may be here
+  int regions_ = 0;         // without extra walls
 };
 
 }  // namespace toponav::experiments

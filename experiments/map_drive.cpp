@@ -116,8 +116,8 @@ void ScoreWalls(const core::World& world, double radius, MapDriveResult* out) {
       across = core::SignedDistance(world, w.pa + (w.pb - w.pa) * (t / std::max(length, 1e-9)), false) > kAcrossDepth;
     r.walls_across_free_space += across;
     if (!across) continue;
-    if (!regions) regions.emplace(world, radius);
-    r.walls_across_corridor += regions->Cuts({w.pa, w.pb}, kCutMinArea);
+    if (!regions) regions.emplace(world, radius, kCutMinArea);
+    r.walls_across_corridor += regions->Cuts({w.pa, w.pb});
   }
 }
 

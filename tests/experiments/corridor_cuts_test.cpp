@@ -14,29 +14,29 @@ core::World Corridor() {
 }
 
 TEST(FreeSpaceRegions, AWallAcrossTheCorridorCutsIt) {
-  const FreeSpaceRegions regions(Corridor(), 1.0);
-  EXPECT_EQ(regions.Count({}, 100.0), 1);
-  EXPECT_EQ(regions.Count({{{50, 0}, {50, 14}}}, 100.0), 2);
-  EXPECT_TRUE(regions.Cuts({{50, 0}, {50, 14}}, 100.0));
-  EXPECT_TRUE(regions.Cuts({{50, -3}, {52, 17}}, 100.0)) << "slanted, ends inside the walls";
+  const FreeSpaceRegions regions(Corridor(), 1.0, 100.0);
+  EXPECT_EQ(regions.Count({}), 1);
+  EXPECT_EQ(regions.Count({{{50, 0}, {50, 14}}}), 2);
+  EXPECT_TRUE(regions.Cuts({{50, 0}, {50, 14}}));
+  EXPECT_TRUE(regions.Cuts({{50, -3}, {52, 17}})) << "slanted, ends inside the walls";
 }
 
 TEST(FreeSpaceRegions, AGapNarrowerThanTheAgentIsClosed) {
-  const FreeSpaceRegions regions(Corridor(), 1.0);
-  EXPECT_TRUE(regions.Cuts({{50, 0}, {50, 12.5}}, 100.0)) << "1.5 left for a disc of diameter 2";
-  EXPECT_FALSE(regions.Cuts({{50, 0}, {50, 10}}, 100.0)) << "4 left";
+  const FreeSpaceRegions regions(Corridor(), 1.0, 100.0);
+  EXPECT_TRUE(regions.Cuts({{50, 0}, {50, 12.5}})) << "1.5 left for a disc of diameter 2";
+  EXPECT_FALSE(regions.Cuts({{50, 0}, {50, 10}})) << "4 left";
 }
 
 TEST(FreeSpaceRegions, AWallJuttingIntoTheCorridorDoesNotCutIt) {
-  const FreeSpaceRegions regions(Corridor(), 1.0);
-  EXPECT_FALSE(regions.Cuts({{40, 0}, {46, 5.5}}, 100.0));
-  EXPECT_FALSE(regions.Cuts({{30, 7}, {70, 7}}, 100.0)) << "along the middle: round either end";
+  const FreeSpaceRegions regions(Corridor(), 1.0, 100.0);
+  EXPECT_FALSE(regions.Cuts({{40, 0}, {46, 5.5}}));
+  EXPECT_FALSE(regions.Cuts({{30, 7}, {70, 7}})) << "along the middle: round either end";
 }
 
 TEST(FreeSpaceRegions, ASmallPocketCutOffDoesNotCount) {
-  const FreeSpaceRegions regions(Corridor(), 1.0);
-  EXPECT_FALSE(regions.Cuts({{4, 0}, {4, 14}}, 100.0)) << "the pocket behind it is 4 x 14";
-  EXPECT_TRUE(regions.Cuts({{4, 0}, {4, 14}}, 20.0));
+  const FreeSpaceRegions regions(Corridor(), 1.0, 100.0);
+  EXPECT_FALSE(regions.Cuts({{4, 0}, {4, 14}})) << "the pocket behind it is 4 x 14";
+  EXPECT_TRUE(FreeSpaceRegions(Corridor(), 1.0, 20.0).Cuts({{4, 0}, {4, 14}}));
 }
 
 }  // namespace
