@@ -131,7 +131,8 @@ double ValidationLoss(const VertexModel& model, const std::vector<TrainingExampl
 // be extended).
 json OptionsJson(const TrainOptions& o) {
   return {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate},
-          {"seed", o.seed},   {"subgoal", o.subgoal},       {"init_from", o.init_from}};
+          {"seed", o.seed},   {"subgoal", o.subgoal},       {"init_from", o.init_from},
+          {"vertex_weight", o.vertex_weight}};
 }
 
 json DataJson(const sim::DatagenOptions& d) {
@@ -220,6 +221,7 @@ VertexModel InitialModel(const TrainOptions& o, const std::string& device) {
   VertexNetOptions net;
   net.width = o.width;
   net.subgoal = o.subgoal;
+  net.vertex_weight = o.vertex_weight;
   VertexModel model(net, uint64_t(o.seed), device);
   if (!o.init_from.empty() && model.InitFrom(VertexModel::Load(o.init_from, device)) == 0)
     throw core::DataError(o.init_from, "none of its weights fit the network to train (another width?)");

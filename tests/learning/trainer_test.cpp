@@ -85,7 +85,7 @@ TEST(Trainer, ARolledExampleTurnsItsImageVertexLabelsGoalAndSubgoalLabelsTogethe
   }
 }
 
-TEST(Trainer, TrainsTheSubgoalNetworkFromAVertexModelOnExamplesGivenInMemory) {
+TEST(Trainer, TrainsTheSubgoalNetworkFromAVertexModelOnExamplesGivenInMemoryWithTheVertexWeightAsked) {
   const std::string dir = (fs::temp_directory_path() / ("toponav_train_sub_" + std::to_string(::getpid()))).string();
   fs::remove_all(dir);
   const std::string vertex_path = dir + "_vertex.pt";
@@ -98,10 +98,12 @@ TEST(Trainer, TrainsTheSubgoalNetworkFromAVertexModelOnExamplesGivenInMemory) {
   TrainOptions o = TinyTraining(2);
   o.subgoal = true;
   o.init_from = vertex_path;
+  o.vertex_weight = 100.0;
   const TrainResult result = Train(set, o, dir, false, nullptr);
   EXPECT_EQ(result.train_samples, 1);
   const VertexModel m = VertexModel::Load(result.model_path);
   EXPECT_TRUE(m.options().subgoal);
+  EXPECT_EQ(m.options().vertex_weight, 100.0) << "the loss weight travels with the model";
   EXPECT_NE(m.notes().find("\"mazes\""), std::string::npos) << "the caller's data identity is in the notes";
   EXPECT_NE(m.notes().find("init_from"), std::string::npos);
   set.val[0].subgoal.reset();
