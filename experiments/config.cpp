@@ -229,6 +229,21 @@ void ReadTrain(YamlSection t, learning::TrainOptions* o) {
   t.Finish();
 }
 
+// A relative file path as the config names it: from the working directory when it is there, else from the
+// config file's folder or the nearest folder above it that has it (configs/maze/paper.yaml names
+// models/lsp_net_cpu.pt from the repository root, and runs from any directory); else unchanged, so the
+// error that follows names the path as written.
+std::string FindFromConfig(const std::string& path, const std::string& source) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
+  for (fs::path dir = fs::absolute(source, ec).parent_path(); !dir.empty(); dir = dir.parent_path()) {
+    if (fs::exists(dir / path, ec)) return (dir / path).string();
+    if (dir == dir.parent_path()) break;
+  }
+  return path;
+}
+
 void ReadWorlds(YamlSection w, sim::WorldOptions* worlds) {
   ReadSection(w.Section("labyrinth"), &worlds->labyrinth);
   ReadSection(w.Section("office_park"), &worlds->office_park);
@@ -265,6 +280,8 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadTrain(top.Section("train"), &c.train);
   ReadSection(top.Section("subgoal_data"), &c.subgoal_data);
   top.Finish();
+  for (std::string* path : {&c.sensor.learned.model, &c.sensor.images, &c.sensor.poses, &c.train.init_from})
+    *path = FindFromConfig(*path, source);
   Validate(c);
   return c;
 }

@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <variant>
 
@@ -131,6 +135,20 @@ TEST(Config, TheSubgoalNetworksDataAndStartingModelAreRead) {
   EXPECT_EQ(ErrorOf("subgoal_data:\n  train_first_seed: 2000\n  val_first_seed: 2050\n").key(),
             "subgoal_data.val_first_seed")
       << "validation mazes are not training mazes";
+}
+
+TEST(Config, RelativeFilesAreFoundFromTheConfigsFolderOrAFolderAboveIt) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / ("toponav_config_paths_" + std::to_string(::getpid()));
+  fs::create_directories(root / "configs" / "maze");
+  fs::create_directories(root / "models");
+  std::ofstream(root / "models" / "net.pt") << "x";
+  const std::string config = (root / "configs" / "maze" / "c.yaml").string();
+  std::ofstream(config) << "sensor:\n  kind: learned\n  model: models/net.pt\ntrain:\n  init_from: models/none.pt\n";
+  const Config c = LoadConfig(config);
+  EXPECT_EQ(fs::path(c.sensor.learned.model), root / "models" / "net.pt") << "found two folders up";
+  EXPECT_EQ(c.train.init_from, "models/none.pt") << "a file found nowhere stays as written, for the error to name";
+  fs::remove_all(root);
 }
 
 TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
