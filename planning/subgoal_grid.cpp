@@ -27,6 +27,18 @@ core::Aabb2 ViewBox(const mapping::MapView& view, const Vec2& agent, const Vec2&
   return box;
 }
 
+// The true way through a frontier (to one of its goal-connected cells 'seeds' through seen free space, then
+// to the goal through unseen free space) less the optimistic one (d_robot + d_goal); where the agent cannot
+// reach those cells through seen free space (a map error), the way beyond the frontier less d_goal.
+double SuccessDelta(const std::vector<int>& seeds, const std::vector<double>& robot, const std::vector<double>& to_goal,
+                    double robot_cost, double goal_cost) {
+  if (!std::isfinite(goal_cost)) return 0.0;
+  double through = kInf;
+  for (int c : seeds) through = std::min(through, robot[size_t(c)] + to_goal[size_t(c)]);
+  if (std::isfinite(through) && std::isfinite(robot_cost)) return std::max(0.0, through - robot_cost - goal_cost);
+  return std::max(0.0, MinOver(to_goal, seeds) - goal_cost);
+}
+
 }  // namespace
 
 SubgoalGrid::SubgoalGrid(const mapping::MapView& view, const std::vector<const mapping::Frontier*>& frontiers,
@@ -66,14 +78,19 @@ bool SubgoalGrid::SightClear(const Vec2& a, const Vec2& b) const {
 
 bool SubgoalGrid::goal_known() const { return goal_ >= 0 && known_[size_t(goal_)]; }
 
-OrderingProblem SubgoalGrid::Distances() const {
-  const size_t n = cells_.size();
-  OrderingProblem p;
-  p.properties.resize(n);
+std::vector<char> SubgoalGrid::ThroughKnown() const {
   std::vector<char> through_known = known_;
   for (const auto& cells : cells_)
     for (int c : cells) through_known[size_t(c)] = 1;
   if (agent_ >= 0) through_known[size_t(agent_)] = 1;
+  return through_known;
+}
+
+OrderingProblem SubgoalGrid::Distances() const {
+  const size_t n = cells_.size();
+  OrderingProblem p;
+  p.properties.resize(n);
+  const std::vector<char> through_known = ThroughKnown();
   const std::vector<double> from_agent = CellDistances(raster_, through_known, {agent_});
   std::vector<char> open = unknown_open_;
   if (goal_ >= 0) open[size_t(goal_)] = 1;
@@ -115,6 +132,9 @@ std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, co
   const std::vector<double> to_goal = CellDistances(r, unseen, {grid.goal_cell()});
   std::vector<char> free_or_agent = free;
   if (grid.agent_cell() >= 0) free_or_agent[size_t(grid.agent_cell())] = 1;
+  std::vector<char> seen_free = grid.ThroughKnown();  // the way to a frontier cell, in the true world
+  for (size_t i = 0; i < seen_free.size(); ++i) seen_free[i] = seen_free[i] && free_or_agent[i];
+  const std::vector<double> robot = CellDistances(r, seen_free, {grid.agent_cell()});
   const std::vector<double> from_agent = CellDistances(r, free_or_agent, {grid.agent_cell()});
   std::vector<SubgoalProperties> out;
   for (size_t f = 0; f < distances.properties.size(); ++f) {
@@ -122,10 +142,9 @@ std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, co
     for (int c : grid.cells(f))
       if (unseen[size_t(c)]) seeds.push_back(c);
     SubgoalProperties s{0.0, 0.0, 0.0};
-    const double through = MinOver(to_goal, seeds);
-    if (std::isfinite(through)) {
+    if (std::isfinite(MinOver(to_goal, seeds))) {
       s.ps = 1.0;
-      s.delta_success = std::isfinite(distances.goal_cost[f]) ? std::max(0.0, through - distances.goal_cost[f]) : 0.0;
+      s.delta_success = SuccessDelta(seeds, robot, to_goal, distances.robot_cost[f], distances.goal_cost[f]);
     } else if (!seeds.empty()) {
       // The unseen region behind the frontier: how deep the agent would walk in and back out.
       const std::vector<double> region = CellDistances(r, unseen, seeds);

@@ -41,6 +41,9 @@ class SubgoalGrid {
   // frontier's cells; infinity where unreachable.
   OrderingProblem Distances() const;
 
+  // Known space, the frontiers' cells and the agent's cell: where d_robot and D run.
+  std::vector<char> ThroughKnown() const;
+
   int agent_cell() const { return agent_; }
   int goal_cell() const { return goal_; }
   // Not known and not on a map wall (the optimistic planner's unknown space).
@@ -73,8 +76,10 @@ class TrueFreeSpace {
 };
 
 // The true properties of each frontier of 'grid' (lsp.md §2.1): Ps = 1 when the goal can be reached through
-// the frontier's unseen-but-free side, with delta_success = (that true distance - the optimistic d_goal),
-// else Ps = 0 with exploration = 2 (farthest - nearest) robot distance over the unseen free region behind
+// the frontier's unseen-but-free side, with delta_success = (the true way: the agent to a frontier cell from
+// which unseen free space leads to the goal, then that way) - (d_robot + d_goal), so that d_robot + d_goal +
+// delta_success is the true cost even where the frontier's nearest cells lie beyond a true wall from its
+// goal-connected ones; else Ps = 0 with exploration = 2 (farthest - nearest) robot distance over the unseen free region behind
 // it (a round trip to its deepest point).  A frontier with no unseen free space behind it, or whose region
 // the robot cannot reach, gets Ps = 0 and exploration 0 (nothing to find there).
 std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, const TrueFreeSpace& truth,

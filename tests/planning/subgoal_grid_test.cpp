@@ -77,6 +77,32 @@ TEST(SubgoalGrid, TrueLabelsMarkTheWayToTheGoalAndPriceTheDeadEnd) {
   EXPECT_EQ(p[1].exploration, 0.0);
 }
 
+TEST(SubgoalGrid, TheSuccessCostCountsTheWalkAlongAFrontierToItsPartThatLeadsToTheGoal) {
+  // Known: the maze's left strip, x 0-14 from the bottom to the top.  One frontier along x = 14: its bottom
+  // end opens into the corridor towards the dead end (nearest the agent), its top end into the top corridor
+  // (the way to the goal), and between them lies the true wall.
+  const core::World w = ::toponav::testing::DeadEndMaze();
+  mapping::MapView v;
+  const Vec2 a{0, 0}, b{14, 0}, c{14, 74}, e{0, 74};
+  v.known_space.push_back({{a, b, c, e}, {}});
+  v.walls.push_back({0, 1, a, b, 0.9});
+  v.walls.push_back({2, 3, c, e, 0.9});
+  v.walls.push_back({3, 0, e, a, 0.9});
+  v.frontiers.push_back({1, {b, c}, (b + c) * 0.5, 74.0});
+  const std::vector<const mapping::Frontier*> frontiers = testing::FrontiersOf(v);
+  const SubgoalGrid grid(v, frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  const OrderingProblem d = grid.Distances();
+  EXPECT_LT(d.robot_cost[0], 10.0) << "the frontier's nearest cells: beside the agent";
+  const TrueFreeSpace truth(w, 1.0, 1.0);
+  const std::vector<SubgoalProperties> p = TrueSubgoalProperties(grid, truth, d);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p[0].ps, 1.0);
+  const Raster& r = grid.raster();
+  const double shortest = CellDistances(r, truth.On(r), {grid.agent_cell()})[size_t(grid.goal_cell())];
+  EXPECT_NEAR(d.robot_cost[0] + d.goal_cost[0] + p[0].delta_success, shortest, 4.0)
+      << "d_robot + d_goal + delta_success: the true way, up the strip and along the top";
+}
+
 TEST(SubgoalGrid, LabelsLandInTheRangeBearingCellsOfTheFrontiersTheAgentSees) {
   const Seen s;
   const core::World w = ::toponav::testing::DeadEndMaze();
