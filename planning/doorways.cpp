@@ -18,11 +18,13 @@ std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tole
     if (length < min_width) continue;
     // (position along the wall, rejected?)
     std::vector<std::pair<double, bool>> marks{{0.0, false}, {length, false}};
-    for (const auto& v : view.rejected) {
-      const double t = ((v.position - wall.pa).x * d.x + (v.position - wall.pa).y * d.y) / length;
-      if (t > 0 && t < length && core::DistanceToSegment(v.position, {wall.pa, wall.pb}) <= tolerance)
-        marks.push_back({t, true});
-    }
+    const auto mark = [&](const Vec2& p, bool rejected) {
+      const double t = ((p - wall.pa).x * d.x + (p - wall.pa).y * d.y) / length;
+      if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance) marks.push_back({t, rejected});
+    };
+    for (const auto& v : view.rejected) mark(v.position, true);
+    for (const auto& v : view.vertices)
+      if (v.id != wall.a && v.id != wall.b) mark(v.position, false);
     std::sort(marks.begin(), marks.end());
     for (size_t i = 0; i + 1 < marks.size(); ++i) {
       const double width = marks[i + 1].first - marks[i].first;

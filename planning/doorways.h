@@ -18,7 +18,8 @@ struct Doorway {
   core::Vec2 middle() const { return (a + b) * 0.5; }
 };
 
-// Consecutive points along each map wall -- its ends and the rejected vertices within 'tolerance' of it --
+// Consecutive points along each map wall -- its ends, and the rejected vertices and the other map vertices
+// within 'tolerance' of it (a wall drawn past a corner of the map: often the jamb of the opening it covers) --
 // between 'min_width' and 'max_width' apart, with at least one rejected vertex of the two.
 std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tolerance, double min_width,
                                        double max_width);

@@ -38,6 +38,22 @@ TEST(Doorways, TwoRejectedVerticesOnAWallAnOpeningApartAreADoorway) {
       << "vertices farther than the tolerance from the wall are not on it";
 }
 
+TEST(Doorways, AMapCornerOnAWallIsAJambBesideARejectedVertex) {
+  // The bottom wall drawn past a corner of the map at (20, 0.5) (a wall meeting it from below) and over the
+  // opening beside it, whose other jamb the posterior rejected.
+  mapping::MapView view = ClosedRoom({{34, -0.5}});
+  view.vertices.push_back({4, {20, 0.5}, {}, 5});
+  view.vertices.push_back({5, {20, -30}, {}, 5});
+  view.walls.push_back({4, 5, {20, 0.5}, {20, -30}, 0.9});
+  const auto doors = DoorwayHypotheses(view, 2.0, 8.0, 16.0);
+  ASSERT_EQ(doors.size(), 1u);
+  EXPECT_EQ(doors[0].wall, 0);
+  EXPECT_NEAR(doors[0].a.x, 20.0, 1e-9);
+  EXPECT_NEAR(doors[0].b.x, 34.0, 1e-9);
+  view.rejected.clear();
+  EXPECT_TRUE(DoorwayHypotheses(view, 2.0, 8.0, 16.0).empty()) << "map corners alone make no doorway";
+}
+
 TEST(Doorways, APathLeadsThroughTheDoorwayOutOfASealedRoom) {
   const auto view = ClosedRoom({{20, 0.5}, {34, -0.5}});
   PlannerOptions o;
