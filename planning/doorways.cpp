@@ -20,7 +20,8 @@ std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tole
     std::vector<std::pair<double, bool>> marks{{0.0, false}, {length, false}};
     const auto mark = [&](const Vec2& p, bool rejected) {
       const double t = ((p - wall.pa).x * d.x + (p - wall.pa).y * d.y) / length;
-      if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance) marks.push_back({t, rejected});
+      if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance)
+        marks.push_back({t, rejected});
     };
     for (const auto& v : view.rejected) mark(v.position, true);
     for (const auto& v : view.vertices)
