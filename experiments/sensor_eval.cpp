@@ -16,6 +16,11 @@ namespace {
 
 int ArgMax(const core::LabelProbs& p) { return int(std::max_element(p.begin(), p.end()) - p.begin()); }
 
+size_t RangeBand(double range) {
+  const auto& edges = SensorEval::kRangeEdges;
+  return size_t(std::upper_bound(edges.begin(), edges.end(), range) - edges.begin());
+}
+
 // Matches the detections of one observation with the true vertices (within one range and one bearing bin,
 // nearest cell distance first, one-to-one) and adds the counts to 'e'.
 void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& truth, const core::RangeBearingGrid& g,
@@ -40,6 +45,7 @@ void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& tr
     const auto& d = z.detections[p.d];
     const auto& t = truth[p.t];
     ++e->matches;
+    ++e->matched_by_range[RangeBand(t.range)];
     const int detected = ArgMax(d.labels), real = int(t.label);
     e->label_correct += detected == real;
     ++e->confusion[size_t(real)][size_t(detected)];
@@ -48,6 +54,10 @@ void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& tr
     e->bearing_error_sum += db;
     e->range_sq_sum += dr * dr;
     e->bearing_sq_sum += db * db;
+  }
+  for (const auto& t : truth) {
+    ++e->true_by_range[RangeBand(t.range)];
+    ++e->true_by_label[size_t(t.label)];
   }
   ++e->observations;
   e->detections += int(z.detections.size());

@@ -24,6 +24,9 @@ struct SensorEval {
   int label_correct = 0;
   double range_error_sum = 0, bearing_error_sum = 0, range_sq_sum = 0, bearing_sq_sum = 0;
   std::array<std::array<int, 4>, 4> confusion{};  // [true label][detected label] over matches
+  // Recall by the true vertex's range (bands split at kRangeEdges) and by its true label.
+  static constexpr std::array<double, 3> kRangeEdges{10.0, 25.0, 50.0};
+  std::array<int, 4> true_by_range{}, matched_by_range{}, true_by_label{};
   double seconds = 0;
   double precision() const { return detections > 0 ? double(matches) / detections : 0.0; }
   double recall() const { return true_vertices > 0 ? double(matches) / true_vertices : 0.0; }
@@ -31,6 +34,14 @@ struct SensorEval {
   double label_accuracy() const { return matches > 0 ? double(label_correct) / matches : 0.0; }
   double mean_range_error() const { return matches > 0 ? range_error_sum / matches : 0.0; }
   double mean_bearing_error() const { return matches > 0 ? bearing_error_sum / matches : 0.0; }
+  double recall_in_band(size_t b) const {
+    return true_by_range[b] > 0 ? double(matched_by_range[b]) / true_by_range[b] : 0.0;
+  }
+  double recall_of_label(size_t l) const {
+    int found = 0;
+    for (int n : confusion[l]) found += n;
+    return true_by_label[l] > 0 ? double(found) / true_by_label[l] : 0.0;
+  }
 };
 
 SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& options);

@@ -37,6 +37,18 @@ TEST(SensorEval, TheNoisySensorsConfiguredRatesAreMeasuredBack) {
   EXPECT_NEAR(e.recall(), 0.7, 0.06);
   EXPECT_NEAR(double(e.detections - e.matches) / e.observations, 2.0, 0.5);
   EXPECT_NEAR(e.label_accuracy(), 0.8, 0.08);
+  int banded = 0;
+  for (size_t b = 0; b < e.true_by_range.size(); ++b) {
+    banded += e.true_by_range[b];
+    if (e.true_by_range[b] >= 50) {
+      EXPECT_NEAR(e.recall_in_band(b), 0.7, 0.12) << "misses fall alike at every range";
+    }
+  }
+  EXPECT_EQ(banded, e.true_vertices);
+  for (size_t l = 0; l < e.true_by_label.size(); ++l)
+    if (e.true_by_label[l] >= 50) {
+      EXPECT_NEAR(e.recall_of_label(l), 0.7, 0.12) << "label " << l;
+    }
   const std::string yaml = NoisySensorYaml(e, "test");
   EXPECT_NE(yaml.find("miss_probability: 0.3"), std::string::npos) << yaml;
   EXPECT_NE(yaml.find("kind: noisy"), std::string::npos);
