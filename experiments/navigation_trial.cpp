@@ -68,13 +68,14 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 }
 
 // The goal-directed policy: the planner's way to the goal every step.  An agent that makes no headway is nudged
-// as in a search, and the frontier it stands at is blocked: a wall the map has not accepted yet (its vertices
-// seen edge-on or from too close) that the optimistic way runs through; blocked frontiers are walls to the
-// planners (the same place under a new id too, planning::GivenUpFrontiers).  Where the map cuts the goal off
-// (a goal-directed trial's goal is reachable: some wall of the map is false), Recover() tries in turn a way
-// through a doorway hypothesis (planning/doorways.h), the blocked frontiers opened again, and a frontier or a
-// suspected false wall to look at from close by (planning::SuspectInspector); the trial ends "cut_off" only
-// when none is left for cut_off_steps steps.
+// as in a search, and the frontier it stands at is blocked where it stood: a wall the map has not accepted yet
+// (its vertices seen edge-on or from too close) that the optimistic way runs through.  The part of a blocked
+// frontier within search.give_up_probe_radius of the agent is a wall to the planners (the rest of it may hold
+// the opening the agent was heading for); a frontier lying wholly on such parts is no target.  Where the map
+// cuts the goal off (a goal-directed trial's goal is reachable: some wall of the map is false), Recover()
+// tries in turn a way through a doorway hypothesis (planning/doorways.h), the blocked frontiers opened
+// again, and a frontier or a suspected false wall to look at from close by (planning::SuspectInspector); the
+// trial ends "cut_off" only when none is left for cut_off_steps steps.
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -98,12 +99,11 @@ class NavigationPolicy : public AgentPolicy {
     if (int(window_.size()) == options_.stuck_window && Huddled(window_, options_.stuck_span)) return End("stuck");
     blocked_.Update(state.view->frontiers);
     mapping::MapView view = WithRegionWalls(*state.view, region_);
-    for (const auto& f : state.view->frontiers)
-      if (blocked_.Contains(f.id)) planning::AddWalls(&view, f.points);
+    for (const auto& e : blocked_.probed()) planning::AddWalls(&view, {e.a, e.b});
     const planning::VisibilityGraph graph(view, planning_, false);
     std::vector<planning::FrontierTarget> targets;
     for (const auto& t : planning::FrontierTargets(*state.view, planning_))
-      if (!blocked_.Contains(t.frontier_id)) targets.push_back(t);
+      if (!Covered(state.view->frontiers, t.frontier_id)) targets.push_back(t);
     if (on_plan) on_plan(state, targets);
     const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
     choice_ = planner_->Plan(problem).at(0);
@@ -169,6 +169,13 @@ class NavigationPolicy : public AgentPolicy {
       doorway_ = d.middle();
     }
     return best;
+  }
+
+  // True if the frontier lies wholly where the agent was stuck at given-up ones.
+  bool Covered(const std::vector<mapping::Frontier>& frontiers, int id) const {
+    for (const auto& f : frontiers)
+      if (f.id == id) return blocked_.Covers(f);
+    return false;
   }
 
   bool End(const char* reason) {

@@ -65,6 +65,8 @@ void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& fron
   }
 }
 
+bool GivenUpFrontiers::Covers(const mapping::Frontier& f) const { return LiesOn(edges_, f, reach_); }
+
 std::vector<int> GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& frontiers) {
   std::vector<int> back;
   if (reach_ <= 0) return back;

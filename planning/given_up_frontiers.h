@@ -25,6 +25,8 @@ class GivenUpFrontiers {
   // returns the ids taken back.
   std::vector<int> Update(const std::vector<mapping::Frontier>& frontiers);
   bool Contains(int id) const { return ids_.count(id) > 0; }
+  // True if 'f' (its middle and ends) lies within 'reach' of where given-up frontiers were probed.
+  bool Covers(const mapping::Frontier& f) const;
   // Takes every frontier back (they were guesses: a goal-directed agent whose map is sealed retries them).
   void Clear() { *this = GivenUpFrontiers(reach_, probe_radius_); }
   int given_up() const { return given_up_; }  // frontiers given up with GiveUp (not counting re-created ones)

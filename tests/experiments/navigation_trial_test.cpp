@@ -132,5 +132,18 @@ TEST(NavigationTrial, TheMazeConfigLeavesASideOpeningSeenFromDownTheCorridorOpen
   EXPECT_LT(r.distance, 1.5 * r.shortest) << "travelled " << r.distance << ", shortest way " << r.shortest;
 }
 
+TEST(NavigationTrial, AnAgentPressingAtAWallItSawOnlyEdgeOnGoesOnToTheOpeningFartherAlongTheFrontier) {
+  // Tuning maze 7081: walking up a corridor, the agent sees its side wall only edge-on, so the wall never
+  // enters the map and a frontier runs along it past the real opening to the goal's side.  The optimistic way
+  // pressed the agent at the wall; when the whole frontier was blocked there was no way left, the blocks were
+  // cleared and it pressed again until it ended "stuck".  Blocking the part near where it stood, it goes on.
+  const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
+  NavigationTrialOptions o;
+  o.planner = GoalPlanner::kLsp;
+  o.max_steps = 250;
+  const NavigationResult r = RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7081), cfg, o, 7081);
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+}
+
 }  // namespace
 }  // namespace toponav::experiments

@@ -72,6 +72,19 @@ TEST(GivenUpFrontiers, AFrontierGivenUpWhereAgentsStoodRecordsOnlyThePartNearTha
   EXPECT_NEAR(g.probed()[0].b.y, 50.0 + std::sqrt(399.0), 1e-9);
 }
 
+TEST(GivenUpFrontiers, AFrontierIsCoveredOnlyWhereItLiesWhollyOnProbedParts) {
+  // Given up where the agent stood at (1, 50): the long frontier itself is not covered (its ends lie beyond
+  // the probed part, where an opening may be), a piece near the probe is.
+  GivenUpFrontiers g(3.0, 20.0);
+  const core::Vec2 at{1, 50};
+  const mapping::Frontier along = MakeFrontier(4, {{0, 0}, {0, 100}});
+  g.GiveUp(4, {along}, &at);
+  EXPECT_TRUE(g.Contains(4));
+  EXPECT_FALSE(g.Covers(along));
+  EXPECT_TRUE(g.Covers(MakeFrontier(6, {{1, 40}, {1, 60}})));
+  EXPECT_FALSE(g.Covers(MakeFrontier(7, {{0, 60}, {0, 80}}))) << "reaches past the probed part";
+}
+
 TEST(GivenUpFrontiers, AFrontierThatGrowsWellPastWhereItWasGivenUpIsTakenBackOnce) {
   GivenUpFrontiers g(3.0, 20.0);
   g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 20}})});
