@@ -116,6 +116,15 @@ TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
   EXPECT_TRUE(estimated) << "every frontier kept the optimistic default";
 }
 
+// A trial of the maze benchmark's config (the learned sensor) in tuning maze 'seed'.
+NavigationResult RunPaperMaze(uint64_t seed, GoalPlanner planner, int max_steps) {
+  const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
+  NavigationTrialOptions o;
+  o.planner = planner;
+  o.max_steps = max_steps;
+  return RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, seed), cfg, o, seed);
+}
+
 TEST(NavigationTrial, TheMazeConfigLeavesASideOpeningSeenFromDownTheCorridorOpen) {
   // Tuning maze 7019: the goal lies through an opening in the side wall of the first corridor.  Seen from 40
   // units down the corridor, the opening's jambs lie on the line between the wall's far corners; when only
@@ -123,11 +132,7 @@ TEST(NavigationTrial, TheMazeConfigLeavesASideOpeningSeenFromDownTheCorridorOpen
   // opening entered the map first and the oracle went round the maze (349 units against a shortest way of 81).
   // With the vertex-weight-30 network and each pair's wall evidence the average of its ends' likelihoods, the
   // wall across the opening came back for a while (128 units); the config takes the smaller of the two.
-  const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
-  NavigationTrialOptions o;
-  o.planner = GoalPlanner::kOracle;
-  o.max_steps = 150;
-  const NavigationResult r = RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7019), cfg, o, 7019);
+  const NavigationResult r = RunPaperMaze(7019, GoalPlanner::kOracle, 150);
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
   EXPECT_LT(r.distance, 1.5 * r.shortest) << "travelled " << r.distance << ", shortest way " << r.shortest;
 }
@@ -137,11 +142,7 @@ TEST(NavigationTrial, AnAgentPressingAtAWallItSawOnlyEdgeOnGoesOnToTheOpeningFar
   // enters the map and a frontier runs along it past the real opening to the goal's side.  The optimistic way
   // pressed the agent at the wall; when the whole frontier was blocked there was no way left, the blocks were
   // cleared and it pressed again until it ended "stuck".  Blocking the part near where it stood, it goes on.
-  const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
-  NavigationTrialOptions o;
-  o.planner = GoalPlanner::kLsp;
-  o.max_steps = 250;
-  const NavigationResult r = RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7081), cfg, o, 7081);
+  const NavigationResult r = RunPaperMaze(7081, GoalPlanner::kLsp, 250);
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
 }
 
