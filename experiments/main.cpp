@@ -5,9 +5,11 @@
 #include <fmt/ranges.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -99,7 +101,17 @@ struct TrialArgs : WorldSource {
   std::optional<int> max_steps, mcmc_every, open_world_mcmc_every;  // unset: the config's
 };
 
-// A goal-directed navigation trial with the named planner (trial.png, and a frame every --frames-every steps).
+// One row of the navigation trace (columns as its header in RunNavigationCommand).
+std::string NavigationTraceRow(int step, const core::Vec2& at, const core::Vec2& goal, const mapping::MapView& v,
+                               const std::map<int, double>& ps) {
+  double min_ps = ps.empty() ? std::nan("") : 1.0;
+  for (const auto& [id, p] : ps) min_ps = std::min(min_ps, p);
+  return fmt::format("{},{:.2f},{:.2f},{:.2f},{},{},{:.3f},{},{},{:.1f}\n", step, at.x, at.y, core::Distance(at, goal),
+                     v.frontiers.size(), ps.size(), min_ps, v.vertices.size(), v.walls.size(), v.known_area());
+}
+
+// A goal-directed navigation trial with the named planner (trial.png, a frame every --frames-every steps, and
+// with --trace a CSV row a step).
 int RunNavigationCommand(const TrialArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
   const auto planner = experiments::ParseGoalPlanner(a.planner);
@@ -114,13 +126,22 @@ int RunNavigationCommand(const TrialArgs& a) {
   int step = 0;
   experiments::MapPictureExtras extras{w.goal, {}};
   n.on_estimates = [&](const std::map<int, double>& ps) { extras.frontier_ps = ps; };
-  if (a.frames_every > 0)
+  std::ofstream trace;
+  if (!a.trace.empty()) {
+    trace.open(a.trace);
+    if (!trace) throw core::DataError(a.trace, "cannot write the trace file");
+    trace << "step,x,y,distance_to_goal,frontiers,estimated_frontiers,min_ps,map_vertices,map_walls,known_area\n";
+  }
+  if (a.frames_every > 0 || trace.is_open())
     n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
-      if (step++ % a.frames_every == 0)
-        experiments::DrawMapPicture(w, v, paths, cfg.picture, (fs::path(a.out) / fmt::format("frame_{:04d}.png", step - 1)).string(), extras);
+      if (a.frames_every > 0 && step % a.frames_every == 0)
+        experiments::DrawMapPicture(w, v, paths, cfg.picture, (fs::path(a.out) / fmt::format("frame_{:04d}.png", step)).string(), extras);
+      if (trace.is_open()) trace << NavigationTraceRow(step, paths.front().back(), w.goal, v, extras.frontier_ps);
+      ++step;
     };
   mapping::MapView view;
   const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
+  if (trace.is_open()) fmt::print("wrote {} ({} steps)\n", a.trace, step);
   experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string(), {w.goal, r.frontier_ps});
   fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, {:.1f} s -> {}\n", seed,
              r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
@@ -312,7 +333,7 @@ CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
       ->check(CLI::Range(1, 100000));
   trial->add_option("--out", a->out, "Output directory: trial.png")->capture_default_str();
   trial->add_option("--video", a->video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
-  trial->add_option("--trace", a->trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals");
+  trial->add_option("--trace", a->trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals (navigation: position, distance to the goal, frontiers, estimates, map size)");
   trial->add_option("--planner", a->planner, "Run goal-directed navigation (start to goal, one agent) with this planner instead: optimistic, oracle, lsp");
   trial->add_option("--frames-every", a->frames_every, "Navigation: also draw the map every this many steps (frame_NNNN.png)")
       ->check(CLI::Range(1, 100000));

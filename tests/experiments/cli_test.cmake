@@ -219,8 +219,16 @@ run(0 ${TOPONAV} train --config ${WORK}/lsp.yaml --out ${WORK}/lsp_train)
 expect_contains("${OUT}" "starting from")
 expect_contains("${ERR}" "[data] val mazes 1/1")
 file(WRITE ${WORK}/lsp_run.yaml "sensor:\n  kind: learned\n  model: ${WORK}/lsp_train/model.pt\nplanning:\n  frontier_row_gap: 10\n")
-run(0 ${TOPONAV} trial --config ${WORK}/lsp_run.yaml --kind guided_maze --seed 7003 --planner lsp --max-steps 6 --out ${WORK}/lsp_trial)
+run(0 ${TOPONAV} trial --config ${WORK}/lsp_run.yaml --kind guided_maze --seed 7003 --planner lsp --max-steps 6 --out ${WORK}/lsp_trial
+    --trace ${WORK}/lsp_trial/trace.csv)
 expect_contains("${OUT}" "planner lsp")
+# the navigation trace: a header and a row a step (the first position and the 6 steps), the estimates named
+file(STRINGS ${WORK}/lsp_trial/trace.csv nav_trace)
+list(LENGTH nav_trace nav_rows)
+list(GET nav_trace 0 nav_header)
+if(NOT nav_rows EQUAL 8 OR NOT nav_header MATCHES "distance_to_goal,frontiers,estimated_frontiers,min_ps")
+  message(FATAL_ERROR "navigation trace: ${nav_rows} lines, header ${nav_header}")
+endif()
 # eval-sensor --subgoal: the trained network's frontier estimates scored along an optimistic maze run
 run(0 ${TOPONAV} eval-sensor --subgoal --config ${WORK}/lsp.yaml --model ${WORK}/lsp_train/model.pt --seeds 7003-7003 --every 25)
 expect_contains("${OUT}" "Ps: AUC")
