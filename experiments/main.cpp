@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -135,13 +136,15 @@ int RunNavigationCommand(const TrialArgs& a) {
   if (a.frames_every > 0 || trace.is_open())
     n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
       if (a.frames_every > 0 && step % a.frames_every == 0)
-        experiments::DrawMapPicture(w, v, paths, cfg.picture, (fs::path(a.out) / fmt::format("frame_{:04d}.png", step)).string(), extras);
-      if (trace.is_open()) trace << NavigationTraceRow(step, paths.front().back(), w.goal, v, extras.frontier_ps);
+        experiments::DrawMapPicture(w, v, paths, cfg.picture,
+                                    (fs::path(a.out) / fmt::format("frame_{:04d}.png", step)).string(), extras);
+      if (trace.is_open())  // labelled like the search trace: moves made (the final map repeats the last)
+        trace << NavigationTraceRow(int(paths.front().size()) - 1, paths.front().back(), w.goal, v, extras.frontier_ps);
       ++step;
     };
   mapping::MapView view;
   const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
-  if (trace.is_open()) fmt::print("wrote {} ({} steps)\n", a.trace, step);
+  if (trace.is_open()) fmt::print("wrote {} ({} rows)\n", a.trace, step);
   experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string(), {w.goal, r.frontier_ps});
   fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, {:.1f} s -> {}\n", seed,
              r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
@@ -333,7 +336,9 @@ CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
       ->check(CLI::Range(1, 100000));
   trial->add_option("--out", a->out, "Output directory: trial.png")->capture_default_str();
   trial->add_option("--video", a->video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
-  trial->add_option("--trace", a->trace, "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and goals (navigation: position, distance to the goal, frontiers, estimates, map size)");
+  trial->add_option("--trace", a->trace,
+                    "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and "
+                    "goals (navigation: position, distance to the goal, frontiers, estimates, map size)");
   trial->add_option("--planner", a->planner, "Run goal-directed navigation (start to goal, one agent) with this planner instead: optimistic, oracle, lsp");
   trial->add_option("--frames-every", a->frames_every, "Navigation: also draw the map every this many steps (frame_NNNN.png)")
       ->check(CLI::Range(1, 100000));

@@ -80,8 +80,8 @@ class TrueFreeSpace {
 // which unseen free space leads to the goal, then that way) - (d_robot + d_goal), so that d_robot + d_goal +
 // delta_success is the true cost even where the frontier's nearest cells lie beyond a true wall from its
 // goal-connected ones; else Ps = 0 with exploration = 2 (farthest - nearest) robot distance over the unseen
-// free region behind it (a round trip to its deepest point).  A frontier with no unseen free space behind it, or whose region
-// the robot cannot reach, gets Ps = 0 and exploration 0 (nothing to find there).
+// free region behind it (a round trip to its deepest point).  A frontier with no unseen free space behind it,
+// or whose region the robot cannot reach, gets Ps = 0 and exploration 0 (nothing to find there).
 std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, const TrueFreeSpace& truth,
                                                      const OrderingProblem& distances);
 

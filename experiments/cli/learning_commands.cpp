@@ -212,10 +212,12 @@ int RunEvalSensor(const EvalSensorArgs& a) {
       e.observations, e.true_vertices, e.detections, e.precision(), e.recall(), e.f1(), e.label_accuracy(),
       e.mean_range_error(), e.mean_bearing_error(), e.seconds);
   const auto& edges = experiments::SensorEval::kRangeEdges;
-  fmt::print("  recall by range: {:.3f} nearer than {} ({} vertices), {:.3f} to {} ({}), {:.3f} to {} ({}), {:.3f} farther ({})\n",
+  fmt::print("  recall by range: {:.3f} nearer than {} ({} vertices), {:.3f} to {} ({}), {:.3f} to {} ({}), "
+             "{:.3f} farther ({})\n",
              e.recall_in_band(0), edges[0], e.true_by_range[0], e.recall_in_band(1), edges[1], e.true_by_range[1],
              e.recall_in_band(2), edges[2], e.true_by_range[2], e.recall_in_band(3), e.true_by_range[3]);
-  fmt::print("  recall by true label: right gap {:.3f} ({}), corner {:.3f} ({}), left gap {:.3f} ({}), point {:.3f} ({})\n",
+  fmt::print("  recall by true label: right gap {:.3f} ({}), corner {:.3f} ({}), left gap {:.3f} ({}), "
+             "point {:.3f} ({})\n",
              e.recall_of_label(0), e.true_by_label[0], e.recall_of_label(1), e.true_by_label[1], e.recall_of_label(2),
              e.true_by_label[2], e.recall_of_label(3), e.true_by_label[3]);
   const std::string yaml = experiments::NoisySensorYaml(e, on);

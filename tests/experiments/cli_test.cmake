@@ -222,7 +222,7 @@ file(WRITE ${WORK}/lsp_run.yaml "sensor:\n  kind: learned\n  model: ${WORK}/lsp_
 run(0 ${TOPONAV} trial --config ${WORK}/lsp_run.yaml --kind guided_maze --seed 7003 --planner lsp --max-steps 6 --out ${WORK}/lsp_trial
     --trace ${WORK}/lsp_trial/trace.csv)
 expect_contains("${OUT}" "planner lsp")
-# the navigation trace: a header and a row a step (the first position and the 6 steps), the estimates named
+# the navigation trace: a header, a row after each of the 6 steps and one for the final map, the estimates named
 file(STRINGS ${WORK}/lsp_trial/trace.csv nav_trace)
 list(LENGTH nav_trace nav_rows)
 list(GET nav_trace 0 nav_header)

@@ -144,6 +144,7 @@ TEST(NavigationTrial, AnAgentPressingAtAWallItSawOnlyEdgeOnGoesOnToTheOpeningFar
   // cleared and it pressed again until it ended "stuck".  Blocking the part near where it stood, it goes on.
   const NavigationResult r = RunPaperMaze(7081, GoalPlanner::kLsp, 250);
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  EXPECT_LT(r.distance, 1.5 * r.shortest) << "travelled " << r.distance << ", shortest way " << r.shortest;
 }
 
 }  // namespace
