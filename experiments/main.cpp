@@ -102,6 +102,16 @@ struct TrialArgs : WorldSource {
   std::optional<int> max_steps, mcmc_every, open_world_mcmc_every;  // unset: the config's
 };
 
+// The --trace CSV at 'path' with the header's first columns written (not open when 'path' is empty).
+std::ofstream OpenTrace(const std::string& path, const std::string& header) {
+  std::ofstream f;
+  if (path.empty()) return f;
+  f.open(path);
+  if (!f) throw core::DataError(path, "cannot write the trace file");
+  f << header;
+  return f;
+}
+
 // One row of the navigation trace (columns as its header in RunNavigationCommand).
 std::string NavigationTraceRow(int step, const core::Vec2& at, const core::Vec2& goal, const mapping::MapView& v,
                                const std::map<int, double>& ps) {
@@ -127,12 +137,9 @@ int RunNavigationCommand(const TrialArgs& a) {
   int step = 0;
   experiments::MapPictureExtras extras{w.goal, {}};
   n.on_estimates = [&](const std::map<int, double>& ps) { extras.frontier_ps = ps; };
-  std::ofstream trace;
-  if (!a.trace.empty()) {
-    trace.open(a.trace);
-    if (!trace) throw core::DataError(a.trace, "cannot write the trace file");
-    trace << "step,x,y,distance_to_goal,frontiers,estimated_frontiers,min_ps,map_vertices,map_walls,known_area\n";
-  }
+  std::ofstream trace =
+      OpenTrace(a.trace, "step,x,y,distance_to_goal,frontiers,estimated_frontiers,min_ps,map_vertices,map_walls,known_area");
+  if (trace.is_open()) trace << "\n";
   if (a.frames_every > 0 || trace.is_open())
     n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
       if (a.frames_every > 0 && step % a.frames_every == 0)
@@ -165,11 +172,8 @@ int RunTrialCommand(const TrialArgs& a) {
   std::unique_ptr<experiments::TrialVideo> video;
   if (!a.video.empty()) video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
   // Trace: one CSV row a step (the map the planners used; the last row is the final map the metrics score).
-  std::ofstream trace;
-  if (!a.trace.empty()) {
-    trace.open(a.trace);
-    if (!trace) throw core::DataError(a.trace, "cannot write the trace file");
-    trace << "step,iou,frontiers,targets,map_vertices,map_walls";
+  std::ofstream trace = OpenTrace(a.trace, "step,iou,frontiers,targets,map_vertices,map_walls");
+  if (trace.is_open()) {
     for (int i = 0; i < t.num_agents; ++i) trace << fmt::format(",x{0},y{0},frontier{0},goal_x{0},goal_y{0}", i);
     trace << "\n";
   }
