@@ -62,7 +62,9 @@ nlohmann::json DatasetJson(const DatagenOptions& o, const sim::RenderOptions& re
                  {"train_seeds", {o.train_first_seed, o.train_first_seed + o.train_num_seeds - 1}},
                  {"val_seeds", {o.val_first_seed, o.val_first_seed + o.val_num_seeds - 1}},
                  {"samples_per_world", o.samples_per_world},
-                 {"min_clearance", o.min_clearance}};
+                 {"min_clearance", o.min_clearance},
+                 {"near_wall_fraction", o.near_wall_fraction},
+                 {"near_wall_clearance", o.near_wall_clearance}};
   return j;
 }
 
@@ -100,7 +102,7 @@ ExportSummary ExportDataset(const DatagenOptions& o, const sim::WorldOptions& wo
     for (size_t k = 0; k < ids.size(); ++k) {
       const SampleId& id = ids[k];
       if (!sampler || id.kind != world.kind || id.world_seed != world.world_seed) {
-        sampler = std::make_unique<WorldSampler>(id.kind, id.world_seed, worlds, render, grid, o.min_clearance);
+        sampler = std::make_unique<WorldSampler>(id.kind, id.world_seed, worlds, render, grid, o);
         world = id;
       }
       const Sample s = sampler->Make(id);

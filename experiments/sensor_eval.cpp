@@ -75,7 +75,7 @@ SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& o) {
     const sim::RayCaster caster(w);
     auto sensor = CreateSensor(config.sensor, {&w, config.render, std::nullopt, core::DeriveSeed(seed, 1)});
     for (int i = 0; i < o.samples_per_world; ++i) {
-      const core::Pose2 pose = sim::SamplePose(w, {sim::Split::kVal, o.kind, seed, i}, config.datagen.min_clearance);
+      const core::Pose2 pose = sim::SamplePose(w, {sim::Split::kVal, o.kind, seed, i}, config.datagen);
       Score(sensor->Observe(pose, 0), caster.VisibleVertices(pose, grid.max_range), grid, &e);
     }
   }

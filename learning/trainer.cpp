@@ -43,7 +43,7 @@ TrainingSet RenderVertexExamples(const sim::DatagenOptions& data, const sim::Wor
     sim::SampleId world{};
     for (const auto& id : sim::ListSamples(data, split)) {
       if (!sampler || id.kind != world.kind || id.world_seed != world.world_seed) {
-        sampler = std::make_unique<sim::WorldSampler>(id.kind, id.world_seed, worlds, render, grid, data.min_clearance);
+        sampler = std::make_unique<sim::WorldSampler>(id.kind, id.world_seed, worlds, render, grid, data);
         world = id;
       }
       sim::Sample s = sampler->Make(id);
@@ -142,7 +142,9 @@ json DataJson(const sim::DatagenOptions& d) {
           {"train_seeds", {d.train_first_seed, d.train_first_seed + d.train_num_seeds - 1}},
           {"val_seeds", {d.val_first_seed, d.val_first_seed + d.val_num_seeds - 1}},
           {"samples_per_world", d.samples_per_world},
-          {"min_clearance", d.min_clearance}};
+          {"min_clearance", d.min_clearance},
+          {"near_wall_fraction", d.near_wall_fraction},
+          {"near_wall_clearance", d.near_wall_clearance}};
 }
 
 void WriteJsonAtomically(const fs::path& path, const json& j) {

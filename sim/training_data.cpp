@@ -1,6 +1,7 @@
 #include "sim/training_data.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "core/rng.h"
@@ -14,6 +15,7 @@ const core::OptionFields<DatagenOptions>& DatagenOptions::Fields() {
       {"train_first_seed", &O::train_first_seed, 0, 9999},     {"train_num_seeds", &O::train_num_seeds, 0, 10000},
       {"val_first_seed", &O::val_first_seed, 0, 9999},         {"val_num_seeds", &O::val_num_seeds, 0, 10000},
       {"samples_per_world", &O::samples_per_world, 1, 100000}, {"min_clearance", &O::min_clearance, 0.0, 50.0},
+      {"near_wall_fraction", &O::near_wall_fraction, 0.0, 1.0}, {"near_wall_clearance", &O::near_wall_clearance, 0.0, 100.0},
   };
   return fields;
 }
@@ -35,6 +37,9 @@ void DatagenOptions::Validate() const {
   core::CheckRanges(*this, Fields(), "datagen.");
   CheckTrainingSeeds("datagen.", train_first_seed, train_num_seeds, val_first_seed, val_num_seeds);
   if (kinds.empty()) throw core::ConfigError("<options>", "datagen.kinds", "[]", "list at least one world kind");
+  if (near_wall_fraction > 0 && near_wall_clearance <= min_clearance)
+    throw core::ConfigError("<options>", "datagen.near_wall_clearance", std::to_string(near_wall_clearance),
+                            "must exceed datagen.min_clearance when datagen.near_wall_fraction is above 0");
 }
 
 const char* ToString(Split split) { return split == Split::kTrain ? "train" : "val"; }
@@ -54,37 +59,42 @@ struct WorldSampler::Impl {
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<RayCaster> caster;
   core::RangeBearingGrid grid;
-  double min_clearance = 0;
+  DatagenOptions poses;
 };
 
 WorldSampler::WorldSampler(core::WorldKind kind, uint64_t world_seed, const WorldOptions& worlds,
-                           const RenderOptions& render, const core::RangeBearingGrid& grid, double min_clearance)
+                           const RenderOptions& render, const core::RangeBearingGrid& grid, const DatagenOptions& poses)
     : impl_(std::make_unique<Impl>()) {
   impl_->world = GenerateWorld(kind, worlds, world_seed);
   impl_->renderer = std::make_unique<Renderer>(impl_->world, render);
   impl_->caster = std::make_unique<RayCaster>(impl_->world);
   impl_->grid = grid;
-  impl_->min_clearance = min_clearance;
+  impl_->poses = poses;
 }
 WorldSampler::~WorldSampler() = default;
 
-core::Pose2 SamplePose(const core::World& w, const SampleId& id, double min_clearance) {
+core::Pose2 SamplePose(const core::World& w, const SampleId& id, const DatagenOptions& o) {
   // The pose is a pure function of the sample: its own random stream.
   core::Rng rng(core::DeriveSeed(core::DeriveSeed(id.world_seed, uint64_t(id.kind) + 1),
                                  uint64_t(id.index) * 2 + uint64_t(id.split)));
-  for (int tries = 0; tries < 10000; ++tries) {
+  // Drawn first only when asked for, so the poses of uniform data stay what they were.
+  const bool near_wall = o.near_wall_fraction > 0 && rng.Uniform(0.0, 1.0) < o.near_wall_fraction;
+  const double max_clearance = near_wall ? o.near_wall_clearance : std::numeric_limits<double>::infinity();
+  for (int tries = 0; tries < 100000; ++tries) {
     const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
-    if (core::IsFree(w, p, true) && core::SignedDistance(w, p, true) >= min_clearance)
-      return {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
+    if (!core::IsFree(w, p, true)) continue;
+    const double clearance = core::SignedDistance(w, p, true);
+    if (clearance >= o.min_clearance && clearance <= max_clearance) return {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
   }
   throw core::DataError("<datagen>", std::string(core::ToString(id.kind)) + " seed " + std::to_string(id.world_seed) +
-                                         ": no free pose with clearance " + std::to_string(min_clearance));
+                                         ": no free pose with clearance " + std::to_string(o.min_clearance) +
+                                         (near_wall ? " to " + std::to_string(o.near_wall_clearance) : std::string()));
 }
 
 Sample WorldSampler::Make(const SampleId& id) const {
   Sample s;
   s.id = id;
-  s.pose = SamplePose(impl_->world, id, impl_->min_clearance);
+  s.pose = SamplePose(impl_->world, id, impl_->poses);
   s.image = impl_->renderer->Render(s.pose);
   s.labels = RasterizeVertexLabels(impl_->caster->VisibleVertices(s.pose, impl_->grid.max_range), impl_->grid);
   return s;

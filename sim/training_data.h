@@ -27,6 +27,10 @@ struct DatagenOptions {
   int val_num_seeds = 20;
   int samples_per_world = 25;
   double min_clearance = 2.0;    // poses at least this far from walls and clutter, world units
+  // This fraction of the poses lies at most near_wall_clearance from a wall or clutter (where search agents
+  // walk: along buildings and walls), the rest anywhere in free space.
+  double near_wall_fraction = 0.0;
+  double near_wall_clearance = 6.0;  // world units, above min_clearance
   static const core::OptionFields<DatagenOptions>& Fields();
   void Validate() const;         // ranges, seeds below 10000, disjoint splits, at least one kind
 };
@@ -55,16 +59,17 @@ struct Sample {
   VertexLabelGrid labels;
 };
 
-// The sample's pose in 'world': a free point at least 'min_clearance' from walls and clutter, a random
-// heading; a pure function of the id.  Throws core::DataError if none is found.
-core::Pose2 SamplePose(const core::World& world, const SampleId& id, double min_clearance);
+// The sample's pose in 'world': a free point at least options.min_clearance from walls and clutter (for
+// options.near_wall_fraction of the ids also at most options.near_wall_clearance), a random heading; a pure
+// function of the id.  Throws core::DataError if none is found.
+core::Pose2 SamplePose(const core::World& world, const SampleId& id, const DatagenOptions& options);
 
-// Makes the samples of one world (they share its renderer and ray caster).  Throws core::DataError if no free
-// pose with the clearance can be found.
+// Makes the samples of one world (they share its renderer and ray caster), their poses drawn as 'poses' says.
+// Throws core::DataError if no free pose with the clearance can be found.
 class WorldSampler {
  public:
   WorldSampler(core::WorldKind kind, uint64_t world_seed, const WorldOptions& worlds, const RenderOptions& render,
-               const core::RangeBearingGrid& grid, double min_clearance);
+               const core::RangeBearingGrid& grid, const DatagenOptions& poses);
   ~WorldSampler();
   Sample Make(const SampleId& id) const;
 

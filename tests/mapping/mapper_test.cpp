@@ -8,6 +8,7 @@
 #include "core/rng.h"
 #include "mapping/mapping.h"
 #include "mapping/polygon_set.h"
+#include "tests/testing/square_room.h"
 #include "tests/testing/worlds.h"
 
 namespace toponav::mapping {
@@ -17,37 +18,11 @@ using core::Detection;
 using core::Observation;
 using core::Vec2;
 
-// A detection of world point 'p' seen from 'pose', exact, with the given label and a small covariance.
-Detection Det(const core::Pose2& pose, Vec2 p, core::VertexLabel label, double sr = 0.3, double st = 0.02) {
-  Detection d;
-  d.range = core::Distance(pose.position(), p);
-  d.bearing = core::WrapAngle(std::atan2(p.y - pose.y, p.x - pose.x) - pose.yaw);
-  d.polar = {sr * sr, 0, st * st};
-  d.labels = core::OneHot(label);
-  return d;
-}
-
-Observation Obs(const core::Pose2& pose, std::vector<Detection> dets) {
-  Observation z;
-  z.pose = pose;
-  z.detections = std::move(dets);
-  std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
-  return z;
-}
-
-// The four corners of the square room [0,10]^2 seen from inside: all corners.
-std::vector<Detection> SquareCorners(const core::Pose2& pose) {
-  std::vector<Detection> d;
-  for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) d.push_back(Det(pose, c, core::VertexLabel::kCorner));
-  return d;
-}
-Observation SquareFromInside(const core::Pose2& pose) { return Obs(pose, SquareCorners(pose)); }
-
-MapperOptions SquareOptions() {
-  MapperOptions o;
-  o.world_bounds = core::Aabb2{{-1, -1}, {11, 11}};
-  return o;
-}
+using testing::Det;
+using testing::Obs;
+using testing::SquareCorners;
+using testing::SquareFromInside;
+using testing::SquareOptions;
 
 TEST(Mapper, SquareSeenFromInsideYieldsFourVerticesAndFourWalls) {
   Mapper m(SquareOptions());
@@ -61,60 +36,6 @@ TEST(Mapper, SquareSeenFromInsideYieldsFourVerticesAndFourWalls) {
   EXPECT_NEAR(view.known_area(), 100.0, 1e-6);
   EXPECT_TRUE(view.frontiers.empty()) << "a closed room has no frontier";
   EXPECT_LT(m.LogPosterior(), 0.0);
-}
-
-TEST(Mapper, InjectedFalsePositivesAreRejectedAndPosteriorDoesNotDrop) {
-  Mapper m(SquareOptions());
-  core::Rng rng(2);
-  for (int i = 0; i < 30; ++i) {
-    const core::Pose2 pose{5 + 0.05 * i, 5, 0.0};
-    std::vector<Detection> d = SquareCorners(pose);
-    if (i % 6 == 0) {  // 5 of 30 observations carry a false detection in open space (vertexnav.md §3.3)
-      Detection fp;
-      fp.range = i % 12 == 0 ? 2.0 : 0.5;
-      fp.bearing = 0.0;
-      fp.polar = {1.0, 0, 0.5};
-      d.push_back(fp);
-    }
-    m.AddObservation(Obs(pose, d));
-  }
-  EXPECT_GT(m.PotentialVertices().size(), 4u);
-  const double before = m.LogPosterior();
-  const double gain = m.SampleMostLikelyMap(rng);
-  EXPECT_GE(gain, 0.0);
-  // The sampler's incremental bookkeeping (affected observations, walls a flip brings or splits) agrees
-  // with the posterior recomputed from scratch.
-  EXPECT_NEAR(m.LogPosterior(), before + gain, 1e-6 * std::abs(before));
-  EXPECT_LT(m.LogPosterior(), 0.0);
-  const MapView view = m.View();
-  EXPECT_EQ(view.vertices.size(), 4u);
-  EXPECT_EQ(view.walls.size(), 4u);
-  for (const auto& v : view.vertices) EXPECT_TRUE(std::abs(v.position.x - 5) > 4 && std::abs(v.position.y - 5) > 4);
-}
-
-TEST(Mapper, ACallFlipsAtMostTheProposalsItIsGiven) {
-  // The square room seen 12 times: its 4 corners are candidates that only MCMC brings into the map.
-  auto drive = [](Mapper& m) {
-    for (int i = 0; i < 12; ++i) {
-      const core::Pose2 pose{5 + 0.05 * i, 5, 0.0};
-      m.AddObservation(Obs(pose, SquareCorners(pose)));
-    }
-  };
-  core::Rng rng(3);
-  Mapper none(SquareOptions());
-  drive(none);
-  EXPECT_EQ(none.SampleMostLikelyMap(rng, 0), 0.0);
-  EXPECT_EQ(none.Stats().last_mcmc_accepted, 0);
-  EXPECT_TRUE(none.View().vertices.empty());
-  Mapper one(SquareOptions());
-  drive(one);
-  one.SampleMostLikelyMap(rng, 1);
-  EXPECT_EQ(one.Stats().last_mcmc_accepted, 1) << "adding a well-seen corner raises the posterior";
-  EXPECT_EQ(one.View().vertices.size(), 1u);
-  Mapper all(SquareOptions());
-  drive(all);
-  all.SampleMostLikelyMap(rng);  // options.mcmc_samples
-  EXPECT_EQ(all.View().vertices.size(), 4u);
 }
 
 // The square room seen from inside, each observation with one false detection somewhere on the wall y = 0

@@ -33,7 +33,7 @@ TEST(TrainingData, SplitsComeFromDisjointTuningSeedsAndBenchmarkSeedsAreRefused)
 TEST(TrainingData, ASampleIsAPureFunctionOfItsIdWithLabelsFromTheRayCaster) {
   const SampleId id{Split::kTrain, core::WorldKind::kLabyrinth, 3, 1};
   const core::RangeBearingGrid grid;
-  const WorldSampler a(id.kind, id.world_seed, {}, {}, grid, 2.0), b(id.kind, id.world_seed, {}, {}, grid, 2.0);
+  const WorldSampler a(id.kind, id.world_seed, {}, {}, grid, Tiny()), b(id.kind, id.world_seed, {}, {}, grid, Tiny());
   const Sample s = a.Make(id), t = b.Make(id);
   EXPECT_EQ(s.pose.x, t.pose.x);
   EXPECT_EQ(s.pose.yaw, t.pose.yaw);
@@ -46,6 +46,27 @@ TEST(TrainingData, ASampleIsAPureFunctionOfItsIdWithLabelsFromTheRayCaster) {
   EXPECT_EQ(s.labels.cells, RasterizeVertexLabels(caster.VisibleVertices(s.pose, grid.max_range), grid).cells);
   EXPECT_GT(s.labels.num_vertices(), 0);
   EXPECT_EQ(s.image.width, 512);
+}
+
+TEST(TrainingData, ANearWallFractionDrawsAboutThatShareOfPosesNextToBuildings) {
+  const core::World w = GenerateWorld(core::WorldKind::kOfficePark, {}, 7);
+  DatagenOptions uniform = Tiny(), near = Tiny();
+  near.near_wall_fraction = 0.5;
+  near.near_wall_clearance = 6.0;
+  int close_uniform = 0, close_near = 0;
+  const int n = 200;
+  for (int i = 0; i < n; ++i) {
+    const SampleId id{Split::kTrain, core::WorldKind::kOfficePark, 7, i};
+    const double du = core::SignedDistance(w, SamplePose(w, id, uniform).position(), true);
+    const double dn = core::SignedDistance(w, SamplePose(w, id, near).position(), true);
+    EXPECT_GE(dn, near.min_clearance);
+    close_uniform += du <= 6.0;
+    close_near += dn <= 6.0;
+  }
+  EXPECT_LT(close_uniform, n / 5) << "open ground: few uniform poses lie next to a building";
+  EXPECT_GT(close_near, n / 2 - 25) << "about half the poses are drawn next to one";
+  near.near_wall_clearance = near.min_clearance;
+  EXPECT_THROW(near.Validate(), core::ConfigError);
 }
 
 }  // namespace
