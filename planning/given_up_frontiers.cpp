@@ -56,11 +56,11 @@ void GivenUpFrontiers::AddPieces(const mapping::Frontier& f, const Vec2* probed_
 }
 
 void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& frontiers, const Vec2* probed_at) {
-  if (!ids_.insert(id).second) return;
-  ++given_up_;
+  const bool fresh = ids_.insert(id).second;
+  given_up_ += fresh;
   for (const auto& f : frontiers) {
     if (f.id != id) continue;
-    extent_[id] = Edges(f.points);
+    if (fresh) extent_[id] = Edges(f.points);
     AddPieces(f, probed_at);
   }
 }

@@ -4,9 +4,10 @@
 // ones were probed is given up as well.  Where a frontier was probed: the part of it within 'probe_radius' of
 // the point agents stood at (a long frontier along an unmapped wall may hold an opening farther along that
 // the agent never looked through), or all of it when no point is given (agents gave it up because they could
-// not get to it).  A given-up frontier that grows well past where it lay when it was given up (its middle or
-// an end farther than 4 'reach' from it) is another frontier now: it is taken back (once).  Reach 0: by id
-// only, and nothing is taken back.
+// not get to it).  Giving a frontier up again where agents stood elsewhere along it adds that part.  A
+// given-up frontier that grows well past where it lay when it was given up (its middle or an end farther than
+// 4 'reach' from it) is another frontier now: it is taken back (once).  Reach 0: by id only, and nothing is
+// taken back.
 #include <map>
 #include <set>
 #include <vector>
@@ -19,7 +20,7 @@ namespace toponav::planning {
 class GivenUpFrontiers {
  public:
   explicit GivenUpFrontiers(double reach, double probe_radius = 0.0) : reach_(reach), probe_radius_(probe_radius) {}
-  // Gives up frontier 'id'; its polyline is taken from 'frontiers' if it is there.
+  // Gives up frontier 'id' (again: one more probed part); its polyline is taken from 'frontiers' if it is there.
   void GiveUp(int id, const std::vector<mapping::Frontier>& frontiers, const core::Vec2* probed_at = nullptr);
   // Gives up the frontiers that lie where given-up ones were probed, and takes back the ones that grew;
   // returns the ids taken back.

@@ -105,6 +105,18 @@ TEST(GivenUpFrontiers, AFrontierThatGrowsWellPastWhereItWasGivenUpIsTakenBackOnc
   EXPECT_TRUE(g.Contains(4));
 }
 
+TEST(GivenUpFrontiers, GivingAFrontierUpAgainWhereTheAgentStoodElsewhereRecordsThatPartToo) {
+  GivenUpFrontiers g(3.0, 10.0);
+  const mapping::Frontier along = MakeFrontier(4, {{0, 0}, {0, 100}});
+  const core::Vec2 first{1, 20}, second{1, 80};
+  g.GiveUp(4, {along}, &first);
+  g.GiveUp(4, {along}, &second);
+  EXPECT_EQ(g.given_up(), 1) << "one frontier";
+  ASSERT_EQ(g.probed().size(), 2u);
+  EXPECT_TRUE(g.Covers(MakeFrontier(6, {{1, 75}, {1, 85}}))) << "the second place is probed as well";
+  EXPECT_FALSE(g.Covers(MakeFrontier(7, {{1, 45}, {1, 55}}))) << "not the stretch between them";
+}
+
 TEST(GivenUpFrontiers, ClearTakesEveryFrontierBack) {
   GivenUpFrontiers g(3.0);
   g.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 10}})});
