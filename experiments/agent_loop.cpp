@@ -1,5 +1,6 @@
 #include "experiments/agent_loop.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -30,6 +31,28 @@ void MoveAgents(const LoopState& state, const std::vector<std::vector<core::Vec2
     s = policy.AfterStep(state, int(a), s, motion, rng);
     r->distance[a] += s.distance;
     r->paths[a].push_back(s.pose.position());
+  }
+}
+
+// True if two observations are the same view: the same pose and the same detections (agents standing
+// together, with a sensor that sees the same image the same way).
+bool SameView(const core::Observation& x, const core::Observation& y) {
+  auto same_detection = [](const core::Detection& a, const core::Detection& b) {
+    return a.range == b.range && a.bearing == b.bearing && a.polar.xx == b.polar.xx && a.polar.xy == b.polar.xy &&
+           a.polar.yy == b.polar.yy && a.labels == b.labels;
+  };
+  return x.pose.x == y.pose.x && x.pose.y == y.pose.y && x.pose.yaw == y.pose.yaw &&
+         std::equal(x.detections.begin(), x.detections.end(), y.detections.begin(), y.detections.end(), same_detection);
+}
+
+// Adds this step's observations to the map.  An agent's view that another agent had this step (a team
+// starting together) is one look, not several: counted again, its errors would pass the map's detection
+// count and posterior as if seen from independent views.
+void AddToMap(const std::vector<core::Observation>& observations, mapping::Mapper& mapper) {
+  for (size_t a = 0; a < observations.size(); ++a) {
+    bool seen = false;
+    for (size_t b = 0; b < a && !seen; ++b) seen = SameView(observations[a], observations[b]);
+    if (!seen) mapper.AddObservation(observations[a]);
   }
 }
 
@@ -72,10 +95,8 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
     state.poses.clear();
     for (int a = 0; a < o.num_agents; ++a) state.poses.push_back(motion.Pose(a));
     observations.clear();
-    for (int a = 0; a < o.num_agents; ++a) {
-      observations.push_back(sensor->Observe(state.poses[size_t(a)], a));
-      mapper.AddObservation(observations.back());
-    }
+    for (int a = 0; a < o.num_agents; ++a) observations.push_back(sensor->Observe(state.poses[size_t(a)], a));
+    AddToMap(observations, mapper);
     const auto t1 = Clock::now();
     if (o.mcmc_every > 0 && step % o.mcmc_every == 0) {
       mapper.SampleMostLikelyMap(rng, o.mcmc_samples);

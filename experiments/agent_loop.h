@@ -1,10 +1,10 @@
 #pragma once
 // The agent loop shared by every run in the simulator (a search trial, `toponav map`'s scripted drive, a
 // goal-directed navigation trial): agents start at the world's start; every step each observes (the sensor
-// the config asks for), the observations join one map, MCMC runs on its cadence, the policy says where each
-// agent goes (or that the run ends), and the agents move one step (Box2D).  After the last step a final
-// MCMC call and an exact view give the map that metrics score.  A run is a pure function of its inputs and
-// seed.
+// the config asks for), the observations join one map (one that repeats another agent's this step, pose and
+// detections alike, joins it once), MCMC runs on its cadence, the policy says where each agent goes (or
+// that the run ends), and the agents move one step (Box2D).  After the last step a final MCMC call and an
+// exact view give the map that metrics score.  A run is a pure function of its inputs and seed.
 #include <cstdint>
 #include <functional>
 #include <memory>

@@ -54,6 +54,26 @@ TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndThePolicyEndsTheRu
   ASSERT_TRUE(r.mapper);
 }
 
+TEST(AgentLoop, ATeamStandingTogetherAddsItsSharedViewToTheMapOnce) {
+  // Three agents walk east side by side from the same start.  With a sensor that sees the same place the
+  // same way, their views are one look: the map gets one observation a step, the policy still all three.
+  const core::World w = testing::RoomWorld(60, 30);
+  Config config;
+  sim::NoisySensorOptions& s = config.sensor.noisy;
+  s.range_sigma = s.range_sigma_per_unit = s.bearing_sigma = s.miss_probability = 0.0;
+  s.false_positives_per_observation = s.label_confusion = s.label_softness = 0.0;
+  WalkEast exact(2);
+  LoopOptions o;
+  o.num_agents = 3;
+  RunAgentLoop(w, config, o, exact, 5);
+  EXPECT_EQ(exact.observations, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(exact.this_step, (std::vector<int>{3, 3, 3}));
+  // The default noisy sensor draws its errors afresh for every view: separate looks, all added.
+  WalkEast noisy(2);
+  RunAgentLoop(w, Config{}, o, noisy, 5);
+  EXPECT_EQ(noisy.observations, (std::vector<int>{3, 6, 9}));
+}
+
 TEST(AgentLoop, TheStepCapEndsARunThePolicyDoesNot) {
   const core::World w = testing::RoomWorld(60, 30);
   WalkEast policy(1000);
