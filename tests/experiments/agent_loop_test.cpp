@@ -55,8 +55,9 @@ TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndThePolicyEndsTheRu
 }
 
 TEST(AgentLoop, ATeamStandingTogetherAddsItsSharedViewToTheMapOnce) {
-  // Three agents walk east side by side from the same start.  With a sensor that sees the same place the
-  // same way, their views are one look: the map gets one observation a step, the policy still all three.
+  // Three agents start at the same pose and walk east together, staying on one pose.  With a sensor that
+  // sees the same place the same way, their views are one look: the map gets one observation a step, the
+  // policy still all three.
   const core::World w = testing::RoomWorld(60, 30);
   Config config;
   sim::NoisySensorOptions& s = config.sensor.noisy;
