@@ -56,15 +56,7 @@ nlohmann::json DatasetJson(const DatagenOptions& o, const sim::RenderOptions& re
                 {"height", render.height},
                 {"vertical_fov_deg", render.vertical_fov_deg},
                 {"columns", "column j looks along bearing -pi + 2 pi j / width"}};
-  std::vector<std::string> kinds;
-  for (auto k : o.kinds) kinds.push_back(core::ToString(k));
-  j["worlds"] = {{"kinds", kinds},
-                 {"train_seeds", {o.train_first_seed, o.train_first_seed + o.train_num_seeds - 1}},
-                 {"val_seeds", {o.val_first_seed, o.val_first_seed + o.val_num_seeds - 1}},
-                 {"samples_per_world", o.samples_per_world},
-                 {"min_clearance", o.min_clearance},
-                 {"near_wall_fraction", o.near_wall_fraction},
-                 {"near_wall_clearance", o.near_wall_clearance}};
+  j["worlds"] = sim::DatagenJson(o);
   return j;
 }
 

@@ -21,8 +21,6 @@ using nlohmann::json;
 
 namespace {
 
-json DataJson(const sim::DatagenOptions& d);
-
 // Rolls a row-major rows x cols grid of values by 'shift' columns.
 template <class T>
 void RollColumns(const std::vector<T>& in, int rows, int cols, int shift, std::vector<T>* out) {
@@ -51,7 +49,7 @@ TrainingSet RenderVertexExamples(const sim::DatagenOptions& data, const sim::Wor
           .push_back({std::move(s.image), std::move(s.labels), {}, std::nullopt});
     }
   }
-  set.identity_json = DataJson(data).dump();
+  set.identity_json = sim::DatagenJson(data).dump();
   return set;
 }
 
@@ -133,18 +131,6 @@ json OptionsJson(const TrainOptions& o) {
   return {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate},
           {"seed", o.seed},   {"subgoal", o.subgoal},       {"init_from", o.init_from},
           {"vertex_weight", o.vertex_weight}};
-}
-
-json DataJson(const sim::DatagenOptions& d) {
-  std::vector<std::string> kinds;
-  for (auto k : d.kinds) kinds.push_back(core::ToString(k));
-  return {{"kinds", kinds},
-          {"train_seeds", {d.train_first_seed, d.train_first_seed + d.train_num_seeds - 1}},
-          {"val_seeds", {d.val_first_seed, d.val_first_seed + d.val_num_seeds - 1}},
-          {"samples_per_world", d.samples_per_world},
-          {"min_clearance", d.min_clearance},
-          {"near_wall_fraction", d.near_wall_fraction},
-          {"near_wall_clearance", d.near_wall_clearance}};
 }
 
 void WriteJsonAtomically(const fs::path& path, const json& j) {

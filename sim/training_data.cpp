@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "core/rng.h"
@@ -40,6 +41,18 @@ void DatagenOptions::Validate() const {
   if (near_wall_fraction > 0 && near_wall_clearance <= min_clearance)
     throw core::ConfigError("<options>", "datagen.near_wall_clearance", std::to_string(near_wall_clearance),
                             "must exceed datagen.min_clearance when datagen.near_wall_fraction is above 0");
+}
+
+nlohmann::json DatagenJson(const DatagenOptions& o) {
+  std::vector<std::string> kinds;
+  for (auto k : o.kinds) kinds.push_back(core::ToString(k));
+  return {{"kinds", kinds},
+          {"train_seeds", {o.train_first_seed, o.train_first_seed + o.train_num_seeds - 1}},
+          {"val_seeds", {o.val_first_seed, o.val_first_seed + o.val_num_seeds - 1}},
+          {"samples_per_world", o.samples_per_world},
+          {"min_clearance", o.min_clearance},
+          {"near_wall_fraction", o.near_wall_fraction},
+          {"near_wall_clearance", o.near_wall_clearance}};
 }
 
 const char* ToString(Split split) { return split == Split::kTrain ? "train" : "val"; }

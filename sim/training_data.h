@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "core/option_fields.h"
 #include "core/range_bearing_grid.h"
 #include "core/world.h"
@@ -34,6 +36,9 @@ struct DatagenOptions {
   static const core::OptionFields<DatagenOptions>& Fields();
   void Validate() const;         // ranges, seeds below 10000, disjoint splits, at least one kind
 };
+// The options as JSON: which worlds, splits and poses the data comes from (a dataset's dataset.json and a
+// model's metadata both record it).
+nlohmann::json DatagenJson(const DatagenOptions& options);
 
 // Throws core::ConfigError (keys prefix + "train_num_seeds", ...) unless both seed ranges lie below 10000 and
 // do not overlap.

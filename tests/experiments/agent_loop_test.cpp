@@ -71,7 +71,8 @@ TEST(AgentLoop, ATeamStandingTogetherAddsItsSharedViewToTheMapOnce) {
   EXPECT_EQ(exact.this_step, (std::vector<int>{3, 3, 3}));
   // The default noisy sensor draws its errors afresh for every view: separate looks, all added.
   WalkEast noisy(2);
-  RunAgentLoop(w, Config{}, o, noisy, 5);
+  const Config defaults;
+  RunAgentLoop(w, defaults, o, noisy, 5);
   EXPECT_EQ(noisy.observations, (std::vector<int>{3, 6, 9}));
 }
 
