@@ -30,6 +30,8 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
       {"push_distance", &O::push_distance, 0.0, 1000.0},
       {"give_up_reach", &O::give_up_reach, 0.0, 1000.0},
       {"give_up_probe_radius", &O::give_up_probe_radius, 0.0, 100000.0},
+      {"tour", &O::tour},
+      {"block_when_stuck", &O::block_when_stuck},
   };
   return fields;
 }

@@ -65,6 +65,10 @@ struct SearchOptions {
                                   // id); 0: off
   double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
                                        // stood (0: all of it)
+  bool tour = false;              // one agent heads for the first frontier of the shortest tour through all
+                                  // of them (false: the nearest frontier, the paper's); teams are assigned
+  bool block_when_stuck = false;  // where an agent makes no headway along its path for stuck_steps steps, a
+                                  // wall 4 steps long across its way is added for the planners
   static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };

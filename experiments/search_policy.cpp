@@ -18,12 +18,16 @@ const SearchOptions& Validated(const SearchOptions& o) {
 SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int num_agents)
     : search_(Validated(config.search)),
       planning_(config.planning),
-      planner_(planning::CreateSearchPlanner(num_agents)),
+      planner_(planning::CreateSearchPlanner(num_agents, config.search.tour)),
       given_up_(config.search.give_up_reach, config.search.give_up_probe_radius),
       dwell_(config.search.give_up_steps, config.search.give_up_distance),
       commitment_(num_agents, config.search.switch_ratio, config.search.switch_margin),
       stuck_(num_agents, config.search.stuck_steps, MotionFor(config, world).step_length) {
   if (!world.has_boundary()) region_ = world.bounds;
+  if (config.search.block_when_stuck) {
+    const double step = MotionFor(config, world).step_length;
+    blocks_.emplace(num_agents, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
+  }
 }
 
 std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapView& view) {
@@ -70,8 +74,11 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   dwell_.PushThrough(&targets_, planning_.frontier_setback + search_.push_distance, region_);
   // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out on
   // the way and the plan is redone every step.
-  const planning::VisibilityGraph graph(view, planning_, false);
-  planning::PlanningProblem problem{&view, &graph, &targets_, {}, std::nullopt};
+  std::optional<mapping::MapView> blocked;  // the view with the motion blocks, when there are any
+  if (blocks_ && !blocks_->blocks().empty()) blocked = blocks_->With(view);
+  const mapping::MapView& planned = blocked ? *blocked : view;
+  const planning::VisibilityGraph graph(planned, planning_, false);
+  planning::PlanningProblem problem{&planned, &graph, &targets_, {}, std::nullopt};
   for (const auto& p : state.poses) problem.agents.push_back(p.position());
   choices_ = planner_->Plan(problem);
   commitment_.Apply(graph, targets_, problem.agents, &choices_);
@@ -91,7 +98,9 @@ sim::StepResult SearchPolicy::AfterStep(const LoopState& state, int agent, const
   const bool has_path = found && c.path.points.size() > 1;
   // No path at all while there are frontiers: the agent may stand where the map leaves it no way out.
   const bool no_way = c.status == planning::PlanStatus::kNoPath && !targets_.empty();
-  const bool stuck = stuck_.NoHeadway((*state.trails)[size_t(agent)], has_path, no_way, step.pose.position(), step.distance);
+  const std::vector<Vec2>& trail = (*state.trails)[size_t(agent)];
+  const bool stuck = stuck_.NoHeadway(trail, has_path, no_way, step.pose.position(), step.distance);
+  if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, c.path.points, trail.back(), step.pose.position());
   // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward giving
   // it up as if it stood next to it; all of it counts as probed.
   if (stuck && found && dwell_.Count(c.frontier_id)) given_up_.GiveUp(c.frontier_id, state.view->frontiers);

@@ -4,7 +4,9 @@
 // go to the planner (the nearest frontier for one agent, distinct frontiers for a team); agents keep their
 // frontier while it stays competitive (commitment); frontiers agents stand next to without them going away,
 // or cannot get to, are given up; stuck agents are nudged.  The search ends when no frontier is left
-// ("explored") or none has been reachable for search.unreachable_steps steps ("unreachable").
+// ("explored") or none has been reachable for search.unreachable_steps steps ("unreachable").  With
+// search.block_when_stuck, where an agent's steps make no headway along its path the planners get a short
+// wall across its way (planning::MotionBlocks).
 #include <functional>
 #include <memory>
 #include <optional>
@@ -13,6 +15,7 @@
 
 #include "experiments/agent_loop.h"
 #include "planning/given_up_frontiers.h"
+#include "planning/motion_blocks.h"
 #include "planning/planner.h"
 #include "planning/search_policy.h"
 
@@ -47,6 +50,7 @@ class SearchPolicy : public AgentPolicy {
   planning::FrontierDwell dwell_;
   planning::FrontierCommitment commitment_;
   planning::StuckMonitor stuck_;
+  std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   // This step's targets (pushed through where agents dwelt, and as they were before) and choices.
   std::vector<planning::FrontierTarget> targets_, original_;
   std::vector<planning::FrontierChoice> choices_;

@@ -1,12 +1,14 @@
 #include "planning/planner.h"
 
 #include "core/error.h"
+#include "planning/frontier_tour.h"
 
 namespace toponav::planning {
 
 const char* ToString(PlannerKind kind) {
   switch (kind) {
     case PlannerKind::kNearestFrontier: return "nearest_frontier";
+    case PlannerKind::kTourFrontier: return "frontier_tour";
     case PlannerKind::kTeamFrontiers: return "team_frontiers";
     case PlannerKind::kOptimistic: return "optimistic";
   }
@@ -28,6 +30,17 @@ class NearestFrontierPlanner : public Planner {
     return out;
   }
   std::string name() const override { return ToString(PlannerKind::kNearestFrontier); }
+};
+
+class TourFrontierPlanner : public Planner {
+ public:
+  std::vector<FrontierChoice> Plan(const PlanningProblem& p) override {
+    CheckProblem(p);
+    std::vector<FrontierChoice> out;
+    for (const auto& agent : p.agents) out.push_back(ChooseTourFrontier(*p.graph, *p.targets, agent));
+    return out;
+  }
+  std::string name() const override { return ToString(PlannerKind::kTourFrontier); }
 };
 
 class TeamFrontierPlanner : public Planner {
@@ -61,14 +74,16 @@ class OptimisticPlanner : public Planner {
 std::unique_ptr<Planner> CreatePlanner(PlannerKind kind) {
   switch (kind) {
     case PlannerKind::kNearestFrontier: return std::make_unique<NearestFrontierPlanner>();
+    case PlannerKind::kTourFrontier: return std::make_unique<TourFrontierPlanner>();
     case PlannerKind::kTeamFrontiers: return std::make_unique<TeamFrontierPlanner>();
     case PlannerKind::kOptimistic: return std::make_unique<OptimisticPlanner>();
   }
   return nullptr;
 }
 
-std::unique_ptr<Planner> CreateSearchPlanner(int num_agents) {
-  return CreatePlanner(num_agents > 1 ? PlannerKind::kTeamFrontiers : PlannerKind::kNearestFrontier);
+std::unique_ptr<Planner> CreateSearchPlanner(int num_agents, bool tour) {
+  if (num_agents > 1) return CreatePlanner(PlannerKind::kTeamFrontiers);
+  return CreatePlanner(tour ? PlannerKind::kTourFrontier : PlannerKind::kNearestFrontier);
 }
 
 }  // namespace toponav::planning

@@ -31,16 +31,18 @@ class Planner {
   virtual std::string name() const = 0;
 };
 
-enum class PlannerKind { kNearestFrontier, kTeamFrontiers, kOptimistic };
-const char* ToString(PlannerKind kind);  // "nearest_frontier", "team_frontiers", "optimistic"
+enum class PlannerKind { kNearestFrontier, kTourFrontier, kTeamFrontiers, kOptimistic };
+// "nearest_frontier", "frontier_tour", "team_frontiers", "optimistic"
+const char* ToString(PlannerKind kind);
 
-// kNearestFrontier: each agent its own cheapest reachable frontier (ChooseNearestFrontier); kTeamFrontiers:
+// kNearestFrontier: each agent its own cheapest reachable frontier (ChooseNearestFrontier); kTourFrontier: each
+// agent the first frontier of its shortest tour through all of them (ChooseTourFrontier); kTeamFrontiers:
 // agents to distinct frontiers at the least total cost (AssignFrontiers); kOptimistic (goal-directed
 // navigation's baseline, lsp.md §4.2): each agent the shortest path to the goal on the problem's graph, on
 // which unknown space counts as free (frontier_id -1; kNoPath when the map's walls cut the goal off).
 std::unique_ptr<Planner> CreatePlanner(PlannerKind kind);
-// The frontier planner a search with 'num_agents' agents uses: the nearest frontier for one, the team
-// assignment for more.
-std::unique_ptr<Planner> CreateSearchPlanner(int num_agents);
+// The frontier planner a search with 'num_agents' agents uses: for one, the nearest frontier or ('tour') the
+// first of the shortest tour; the team assignment for more.
+std::unique_ptr<Planner> CreateSearchPlanner(int num_agents, bool tour = false);
 
 }  // namespace toponav::planning

@@ -1,0 +1,36 @@
+#pragma once
+// Where an agent's steps make no headway along its planned path, the map lacks something the agent runs into
+// (a building side whose corners the posterior rejects, so the path cuts through the building): local
+// avoidance slides it along the real wall half a unit a step, or not at all, for as long as the plan says
+// "straight on".  MotionBlocks notes such places from the agent's own motion (no sensing) and gives the
+// planners a short wall across the way the agent was heading there, so the next plan goes round.
+#include <utility>
+#include <vector>
+
+#include "core/geometry.h"
+#include "mapping/mapping.h"
+
+namespace toponav::planning {
+
+class MotionBlocks {
+ public:
+  // 'steps': steps in a row without headway before a block; 'step_length': the agent's step (world units);
+  // a block is 2 * half_width long and stands 'ahead' in front of where the agent stood.
+  MotionBlocks(int num_agents, int steps, double step_length, double half_width, double ahead);
+  // Records agent's step from 'before' to 'after' while it followed 'path' (path[0] = before).  Headway: the
+  // step's progress toward path[1] is at least half of min(step, distance to path[1]).  Returns true when this
+  // step added a block.
+  bool Record(int agent, const std::vector<core::Vec2>& path, const core::Vec2& before, const core::Vec2& after);
+  const std::vector<std::pair<core::Vec2, core::Vec2>>& blocks() const { return blocks_; }
+  // 'view' with every block as a wall between two vertices of its own (ids above the view's), so the
+  // visibility graph has nodes to go round a block's ends.
+  mapping::MapView With(const mapping::MapView& view) const;
+
+ private:
+  std::vector<int> count_;
+  std::vector<std::pair<core::Vec2, core::Vec2>> blocks_;
+  int steps_;
+  double step_length_, half_width_, ahead_;
+};
+
+}  // namespace toponav::planning
