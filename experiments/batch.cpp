@@ -75,6 +75,7 @@ json SearchJson(const TrialId& id, const TrialResult& r) {
   j["distance_per_agent"] = r.distance;
   j["nudges"] = r.nudges;
   j["give_ups"] = r.give_ups;
+  j["blocks"] = r.blocks;
   j["end_reason"] = r.end_reason;
   j["wall_time_s"] = r.wall_time_s;
   j["time_s"] = {{"observe_and_map", r.time_map_s}, {"mcmc", r.time_mcmc_s}, {"known_space", r.time_known_s},

@@ -210,9 +210,9 @@ int RunTrialCommand(const TrialArgs& a) {
   double total = 0;
   for (double d : r.distance) total += d;
   fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, "
-             "frontiers given up {}, {:.1f} s -> {}\n",
+             "frontiers given up {}, motion blocks {}, {:.1f} s -> {}\n",
              seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
-             r.give_ups, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
+             r.give_ups, r.blocks, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
   return 0;
 }
 

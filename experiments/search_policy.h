@@ -36,6 +36,7 @@ class SearchPolicy : public AgentPolicy {
   const std::string& end_reason() const { return end_reason_; }  // "explored", "unreachable", "step_cap"
   int nudges() const { return nudges_; }
   int give_ups() const { return given_up_.given_up(); }
+  int blocks() const { return blocks_ ? int(blocks_->blocks().size()) : 0; }  // motion blocks added
 
  private:
   std::vector<planning::FrontierTarget> Targets(const mapping::MapView& view);

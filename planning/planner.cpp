@@ -21,26 +21,22 @@ void CheckProblem(const PlanningProblem& p) {
   TOPONAV_CHECK(p.view && p.graph && p.targets, "planning problem without a view, graph or targets");
 }
 
-class NearestFrontierPlanner : public Planner {
+// Each agent on its own: 'choose' picks its frontier (nearest, or first of its tour).
+class PerAgentPlanner : public Planner {
  public:
+  using Choose = FrontierChoice (*)(const VisibilityGraph&, const std::vector<FrontierTarget>&, const core::Vec2&);
+  PerAgentPlanner(PlannerKind kind, Choose choose) : kind_(kind), choose_(choose) {}
   std::vector<FrontierChoice> Plan(const PlanningProblem& p) override {
     CheckProblem(p);
     std::vector<FrontierChoice> out;
-    for (const auto& agent : p.agents) out.push_back(ChooseNearestFrontier(*p.graph, *p.targets, agent));
+    for (const auto& agent : p.agents) out.push_back(choose_(*p.graph, *p.targets, agent));
     return out;
   }
-  std::string name() const override { return ToString(PlannerKind::kNearestFrontier); }
-};
+  std::string name() const override { return ToString(kind_); }
 
-class TourFrontierPlanner : public Planner {
- public:
-  std::vector<FrontierChoice> Plan(const PlanningProblem& p) override {
-    CheckProblem(p);
-    std::vector<FrontierChoice> out;
-    for (const auto& agent : p.agents) out.push_back(ChooseTourFrontier(*p.graph, *p.targets, agent));
-    return out;
-  }
-  std::string name() const override { return ToString(PlannerKind::kTourFrontier); }
+ private:
+  PlannerKind kind_;
+  Choose choose_;
 };
 
 class TeamFrontierPlanner : public Planner {
@@ -73,8 +69,8 @@ class OptimisticPlanner : public Planner {
 
 std::unique_ptr<Planner> CreatePlanner(PlannerKind kind) {
   switch (kind) {
-    case PlannerKind::kNearestFrontier: return std::make_unique<NearestFrontierPlanner>();
-    case PlannerKind::kTourFrontier: return std::make_unique<TourFrontierPlanner>();
+    case PlannerKind::kNearestFrontier: return std::make_unique<PerAgentPlanner>(kind, &ChooseNearestFrontier);
+    case PlannerKind::kTourFrontier: return std::make_unique<PerAgentPlanner>(kind, &ChooseTourFrontier);
     case PlannerKind::kTeamFrontiers: return std::make_unique<TeamFrontierPlanner>();
     case PlannerKind::kOptimistic: return std::make_unique<OptimisticPlanner>();
   }

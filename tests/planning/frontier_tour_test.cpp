@@ -3,20 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "planning/planner.h"
+#include "tests/planning/open_square_view.h"
 
 namespace toponav::planning {
 namespace {
 
 using core::Vec2;
-
-// An open, fully known 100 x 100 square without walls: every path is straight.
-mapping::MapView OpenSquare() {
-  mapping::MapView v;
-  v.known_space.push_back({core::Ring{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {}});
-  return v;
-}
-
-FrontierTarget Target(int id, Vec2 p) { return {id, p, 10.0, {1, 0}}; }
+using testing::OpenSquare;
+using testing::Target;
 
 // Frontiers in a row: one 6 to the west, four 5, 10, 15 and 20 to the east.  The nearest (east, 5) leaves the
 // western one for last: 20 + 26 = 46; the west first costs 6 + 26 = 32.

@@ -4,20 +4,14 @@
 
 #include "planning/planner.h"
 #include "core/error.h"
+#include "tests/planning/open_square_view.h"
 
 namespace toponav::planning {
 namespace {
 
 using core::Vec2;
-
-// An open, fully known 100 x 100 square without walls: every path is straight.
-mapping::MapView OpenSquare() {
-  mapping::MapView v;
-  v.known_space.push_back({core::Ring{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {}});
-  return v;
-}
-
-FrontierTarget Target(int id, Vec2 p, Vec2 outward = {1, 0}) { return {id, p, 10.0, outward}; }
+using testing::OpenSquare;
+using testing::Target;
 
 FrontierChoice Choice(const VisibilityGraph& g, int id, Vec2 from, Vec2 to) {
   FrontierChoice c;
