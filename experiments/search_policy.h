@@ -1,7 +1,8 @@
 #pragma once
 // The frontier-search policy (paper Sec. IV) on the agent loop: every step the frontier targets the search
 // has not given up (in open worlds only those inside the search region), pushed through where agents dwelt,
-// go to the planner (the nearest frontier for one agent, distinct frontiers for a team); agents keep their
+// go to the planner (for one agent the nearest frontier, or with search.tour the first of its shortest tour
+// through all of them; distinct frontiers for a team); agents keep their
 // frontier while it stays competitive (commitment); frontiers agents stand next to without them going away,
 // or cannot get to, are given up; stuck agents are nudged.  The search ends when no frontier is left
 // ("explored") or none has been reachable for search.unreachable_steps steps ("unreachable").  With
