@@ -75,7 +75,7 @@ json SearchJson(const TrialId& id, const TrialResult& r) {
   j["distance_per_agent"] = r.distance;
   j["nudges"] = r.nudges;
   j["give_ups"] = r.give_ups;
-  j["blocks"] = r.blocks;
+  j["blocks"] = r.blocks.size();
   j["end_reason"] = r.end_reason;
   j["wall_time_s"] = r.wall_time_s;
   j["time_s"] = {{"observe_and_map", r.time_map_s}, {"mcmc", r.time_mcmc_s}, {"known_space", r.time_known_s},
@@ -112,6 +112,7 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
     t.on_step = on_step;
     const TrialResult r = RunSearchTrial(w, config, t, id.seed, view);
     *paths = r.paths;
+    extras->blocks = r.blocks;
     return SearchJson(id, r);
   }
   NavigationTrialOptions n;
@@ -123,7 +124,7 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
   n.on_step = on_step;
   const NavigationResult r = RunNavigationTrial(w, config, n, id.seed, view);
   *paths = {r.path};
-  *extras = {w.goal, r.frontier_ps};
+  *extras = {w.goal, r.frontier_ps, {}};
   return NavigationJson(id, r);
 }
 

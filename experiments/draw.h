@@ -26,15 +26,17 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
                             const PictureOptions& options, const std::string& png_path,
                             const std::vector<core::Detection>& detections = {});
 
-// What a navigation picture adds: the goal, and each frontier's estimated Ps (frontier id -> [0, 1]).
+// What a navigation picture adds: the goal, and each frontier's estimated Ps (frontier id -> [0, 1]); a
+// search picture: the motion blocks the planners were given (search.block_when_stuck).
 struct MapPictureExtras {
   std::optional<core::Vec2> goal;
   std::map<int, double> frontier_ps;
+  std::vector<core::Segment2> blocks;
 };
 
 // A map over the true world: true walls faint, known space shaded, frontiers dashed (magenta; with an
 // estimated Ps from red at 0 to green at 1), map walls and vertices black, rejected vertices red, the agents'
-// paths in their own colours, the goal (if given) a red disc.
+// paths in their own colours, motion blocks orange, the goal (if given) a red disc.
 void DrawMapPicture(const core::World& world, const mapping::MapView& map,
                     const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
                     const std::string& png_path, const MapPictureExtras& extras = {});

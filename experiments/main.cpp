@@ -135,7 +135,7 @@ int RunNavigationCommand(const TrialArgs& a) {
   n.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
   n.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
   int step = 0;
-  experiments::MapPictureExtras extras{w.goal, {}};
+  experiments::MapPictureExtras extras{w.goal, {}, {}};
   n.on_estimates = [&](const std::map<int, double>& ps) { extras.frontier_ps = ps; };
   std::ofstream trace =
       OpenTrace(a.trace, "step,x,y,distance_to_goal,frontiers,estimated_frontiers,min_ps,map_vertices,map_walls,known_area");
@@ -152,7 +152,7 @@ int RunNavigationCommand(const TrialArgs& a) {
   mapping::MapView view;
   const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
   if (trace.is_open()) fmt::print("wrote {} ({} rows)\n", a.trace, step);
-  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string(), {w.goal, r.frontier_ps});
+  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string(), {w.goal, r.frontier_ps, {}});
   fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, {:.1f} s -> {}\n", seed,
              r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
   return 0;
@@ -206,13 +206,15 @@ int RunTrialCommand(const TrialArgs& a) {
   const auto r = experiments::RunSearchTrial(w, cfg, t, seed, &view);
   if (video) fmt::print("wrote {} ({} frames)\n", a.video, video->frames());
   if (trace.is_open()) fmt::print("wrote {} ({} steps)\n", a.trace, r.steps);
-  experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string());
+  experiments::MapPictureExtras extras;
+  extras.blocks = r.blocks;
+  experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string(), extras);
   double total = 0;
   for (double d : r.distance) total += d;
   fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, "
              "frontiers given up {}, motion blocks {}, {:.1f} s -> {}\n",
              seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
-             r.give_ups, r.blocks, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
+             r.give_ups, r.blocks.size(), r.wall_time_s, (fs::path(a.out) / "trial.png").string());
   return 0;
 }
 

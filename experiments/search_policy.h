@@ -37,7 +37,8 @@ class SearchPolicy : public AgentPolicy {
   const std::string& end_reason() const { return end_reason_; }  // "explored", "unreachable", "step_cap"
   int nudges() const { return nudges_; }
   int give_ups() const { return given_up_.given_up(); }
-  int blocks() const { return blocks_ ? int(blocks_->blocks().size()) : 0; }  // motion blocks added
+  // Where agents made no headway (search.block_when_stuck): the walls given to the planners.
+  std::vector<core::Segment2> blocks() const { return blocks_ ? blocks_->blocks() : std::vector<core::Segment2>{}; }
 
  private:
   std::vector<planning::FrontierTarget> Targets(const mapping::MapView& view);

@@ -38,7 +38,7 @@ struct TrialResult {
   std::vector<double> distance;   // travelled per agent
   int nudges = 0;                 // stuck-agent perturbations
   int give_ups = 0;               // frontiers given up (agents stood next to them, or were stuck on the way)
-  int blocks = 0;                 // motion blocks added (search.block_when_stuck)
+  std::vector<core::Segment2> blocks;  // motion blocks added (search.block_when_stuck)
   std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;
   // Where the time went: observations and map updates, MCMC, known space and frontiers, planning and motion.

@@ -4,7 +4,6 @@
 // avoidance slides it along the real wall half a unit a step, or not at all, for as long as the plan says
 // "straight on".  MotionBlocks notes such places from the agent's own motion (no sensing) and gives the
 // planners a short wall across the way the agent was heading there, so the next plan goes round.
-#include <utility>
 #include <vector>
 
 #include "core/geometry.h"
@@ -21,14 +20,14 @@ class MotionBlocks {
   // step's progress toward path[1] is at least half of min(step, distance to path[1]).  Returns true when this
   // step added a block.
   bool Record(int agent, const std::vector<core::Vec2>& path, const core::Vec2& before, const core::Vec2& after);
-  const std::vector<std::pair<core::Vec2, core::Vec2>>& blocks() const { return blocks_; }
+  const std::vector<core::Segment2>& blocks() const { return blocks_; }
   // 'view' with every block as a wall between two vertices of its own (ids above the view's), so the
   // visibility graph has nodes to go round a block's ends.
   mapping::MapView With(const mapping::MapView& view) const;
 
  private:
   std::vector<int> count_;
-  std::vector<std::pair<core::Vec2, core::Vec2>> blocks_;
+  std::vector<core::Segment2> blocks_;
   int steps_;
   double step_length_, half_width_, ahead_;
 };
