@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "planning/navigation.h"
 
 namespace toponav::planning {
 
@@ -40,25 +41,7 @@ bool MotionBlocks::Record(int agent, const std::vector<Vec2>& path, const Vec2& 
 
 mapping::MapView MotionBlocks::With(const mapping::MapView& view) const {
   mapping::MapView out = view;
-  int next_id = 0;
-  for (const auto& v : view.vertices) next_id = std::max(next_id, v.id + 1);
-  for (const auto& w : view.walls) next_id = std::max({next_id, w.a + 1, w.b + 1});
-  for (const auto& [a, b] : blocks_) {
-    mapping::MapVertex va, vb;
-    va.id = next_id++;
-    va.position = a;
-    vb.id = next_id++;
-    vb.position = b;
-    out.vertices.push_back(va);
-    out.vertices.push_back(vb);
-    mapping::MapWall w;
-    w.a = va.id;
-    w.b = vb.id;
-    w.pa = a;
-    w.pb = b;
-    w.probability = 1.0;
-    out.walls.push_back(w);
-  }
+  for (const auto& block : blocks_) AddFreeStandingWall(&out, block);
   return out;
 }
 

@@ -21,8 +21,7 @@ class MotionBlocks {
   // step added a block.
   bool Record(int agent, const std::vector<core::Vec2>& path, const core::Vec2& before, const core::Vec2& after);
   const std::vector<core::Segment2>& blocks() const { return blocks_; }
-  // 'view' with every block as a wall between two vertices of its own (ids above the view's), so the
-  // visibility graph has nodes to go round a block's ends.
+  // 'view' with every block as a free-standing wall (AddFreeStandingWall), so plans go round its ends.
   mapping::MapView With(const mapping::MapView& view) const;
 
  private:

@@ -85,6 +85,9 @@ bool AlongVertexRow(const mapping::Frontier& frontier, const mapping::MapView& v
 // Adds the polyline's segments to 'view' as walls (no map vertices at their ends): what planners must not
 // cross beyond the map -- a region's edge, frontiers blocked or masked.  'closed': also last -> first.
 void AddWalls(mapping::MapView* view, const std::vector<core::Vec2>& polyline, bool closed = false);
+// Adds 'wall' to 'view' with map vertices of its own at its ends (ids above the view's), so the visibility
+// graph has nodes to go round it: an obstacle standing free of the map's walls.
+void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall);
 
 // The frontiers of 'view' the targets name, in the targets' order.
 std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view, const std::vector<FrontierTarget>& targets);
