@@ -32,6 +32,7 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
       {"give_up_probe_radius", &O::give_up_probe_radius, 0.0, 100000.0},
       {"tour", &O::tour},
       {"block_when_stuck", &O::block_when_stuck},
+      {"close_buildings", &O::close_buildings},
   };
   return fields;
 }

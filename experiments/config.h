@@ -69,6 +69,8 @@ struct SearchOptions {
                                   // of them (false: the nearest frontier, the paper's); teams are assigned
   bool block_when_stuck = false;  // where an agent makes no headway along its path for stuck_steps steps, a
                                   // wall 4 steps long across its way is added for the planners
+  bool close_buildings = false;   // open worlds: a straight frontier between two map vertices that walls
+                                  // already join the long way round is a building's last side, no target
   static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };

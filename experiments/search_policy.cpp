@@ -1,5 +1,6 @@
 #include "experiments/search_policy.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace toponav::experiments {
@@ -34,8 +35,12 @@ std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapVi
   // The same place under a new id is given up again; grown ones come back, counted afresh.
   for (int id : given_up_.Update(view.frontiers)) dwell_.Reset(id);
   std::vector<planning::FrontierTarget> targets;
-  for (const auto& t : planning::FrontierTargets(view, planning_))
+  for (const auto& t : planning::FrontierTargets(view, planning_)) {
+    const auto& f = *std::find_if(view.frontiers.begin(), view.frontiers.end(),
+                                  [&](const mapping::Frontier& g) { return g.id == t.frontier_id; });
+    if (search_.close_buildings && region_ && planning::ClosesWallChain(f, view, planning_)) continue;
     if (!given_up_.Contains(t.frontier_id) && (!region_ || region_->Contains(t.point))) targets.push_back(t);
+  }
   return targets;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "core/assignment.h"
 #include "core/error.h"
@@ -238,6 +239,42 @@ bool AlongVertexRow(const mapping::Frontier& f, const mapping::MapView& view, co
   for (size_t i = 1; i < along.size(); ++i)
     if (along[i] - along[i - 1] > options.frontier_row_gap) return false;
   return true;
+}
+
+bool ClosesWallChain(const mapping::Frontier& f, const mapping::MapView& view, const PlannerOptions& options) {
+  constexpr double kSquareCos = 0.26;  // cos 75 degrees: a wall meeting the side within 15 degrees of square
+  const double tol = options.frontier_row_tolerance;
+  if (f.points.size() < 2) return false;
+  const Vec2 a = f.points.front(), b = f.points.back();
+  for (const auto& p : f.points)
+    if (core::DistanceToSegment(p, {a, b}) > tol) return false;
+  auto vertex_at = [&](const Vec2& p) {
+    for (const auto& v : view.vertices)
+      if (core::Distance(v.position, p) <= tol) return v.id;
+    return -1;
+  };
+  const int from = vertex_at(a), to = vertex_at(b);
+  if (from < 0 || to < 0 || from == to || core::Distance(a, b) < 1e-9) return false;
+  const Vec2 chord = (b - a) / core::Distance(a, b);
+  std::map<int, std::vector<int>> next;
+  for (const auto& w : view.walls) {
+    if ((w.a == from && w.b == to) || (w.a == to && w.b == from)) continue;  // the short way
+    const bool at_end = w.a == from || w.b == from || w.a == to || w.b == to;
+    const double len = core::Distance(w.pa, w.pb);
+    if (at_end && (len < 1e-9 || std::abs(core::Dot(w.pb - w.pa, chord)) > kSquareCos * len)) return false;
+    next[w.a].push_back(w.b);
+    next[w.b].push_back(w.a);
+  }
+  std::set<int> seen{from};
+  std::vector<int> open{from};
+  while (!open.empty()) {
+    const int v = open.back();
+    open.pop_back();
+    if (v == to) return true;
+    for (int u : next[v])
+      if (seen.insert(u).second) open.push_back(u);
+  }
+  return false;
 }
 
 namespace {

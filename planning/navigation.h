@@ -81,6 +81,10 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
 // True if 'frontier' is straight with no stretch longer than PlannerOptions::frontier_row_gap between detected
 // vertices along it (a wall the map has not accepted yet).
 bool AlongVertexRow(const mapping::Frontier& frontier, const mapping::MapView& view, const PlannerOptions& options);
+// True if 'frontier' is straight (within frontier_row_tolerance of its chord) from one map vertex to another
+// that map walls already join the long way round, and every wall at its two ends meets it square (within 15
+// degrees): in an open world of rectilinear buildings, a building's last side.
+bool ClosesWallChain(const mapping::Frontier& frontier, const mapping::MapView& view, const PlannerOptions& options);
 
 // Adds the polyline's segments to 'view' as walls (no map vertices at their ends): what planners must not
 // cross beyond the map -- a region's edge, frontiers blocked or masked.  'closed': also last -> first.

@@ -156,6 +156,8 @@ TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   EXPECT_EQ(c.search.give_up_steps, 12);
   EXPECT_TRUE(c.search.tour);
   EXPECT_FALSE(c.search.block_when_stuck);
+  EXPECT_FALSE(c.search.close_buildings);
+  EXPECT_TRUE(ParseConfig("search:\n  close_buildings: true\n", "x.yaml").search.close_buildings);
   EXPECT_EQ(c.search.unreachable_steps, 9);
   EXPECT_DOUBLE_EQ(c.search.switch_ratio, 2.0);
   EXPECT_DOUBLE_EQ(c.search.push_distance, SearchOptions{}.push_distance) << "unset keys keep their defaults";

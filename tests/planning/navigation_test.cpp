@@ -111,6 +111,23 @@ mapping::MapView RoomWithAnOpenTop(const std::vector<double>& candidates_at_x) {
   return view;
 }
 
+TEST(Frontiers, AStraightFrontierBetweenTheEndsOfAWallChainClosesIt) {
+  // A building seen on three sides: walls 0-1-2-3; its fourth side 3 -> 0 is a frontier.  Vertex 4 stands
+  // apart (another building's corner).
+  const auto view = View({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {30, 10}}, {{0, 1}, {1, 2}, {2, 3}}, {});
+  auto frontier = [](std::vector<Vec2> points) { return mapping::Frontier{7, points, points[0], 10.0}; };
+  EXPECT_TRUE(ClosesWallChain(frontier({{0, 10}, {0.3, 5}, {0, 0}}), view, {}));
+  EXPECT_FALSE(ClosesWallChain(frontier({{0, 10}, {-4, 5}, {0, 0}}), view, {})) << "bent: not a straight side";
+  EXPECT_FALSE(ClosesWallChain(frontier({{0, 10}, {30, 10}}), view, {})) << "to a vertex no wall joins";
+  EXPECT_FALSE(ClosesWallChain(frontier({{0, 10}, {0, 4}}), view, {})) << "ends at no vertex";
+  const auto skew = View({{0, 0}, {10, 0}, {10, 10}, {3, 10}}, {{0, 1}, {1, 2}, {2, 3}}, {});
+  EXPECT_FALSE(ClosesWallChain(frontier({{3, 10}, {0, 0}}), skew, {})) << "not square to the walls at its ends";
+  const auto triangle = View({{0, 0}, {10, 0}, {0, 10}}, {{0, 1}, {1, 2}}, {});
+  EXPECT_FALSE(ClosesWallChain(frontier({{0, 10}, {0, 0}}), triangle, {})) << "a triangle is no building";
+  const auto open = View({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{0, 1}, {2, 3}}, {});
+  EXPECT_FALSE(ClosesWallChain(frontier({{0, 10}, {0, 0}}), open, {})) << "two walls apart: a gap between them";
+}
+
 TEST(Frontiers, AStraightFrontierAlongCloseDetectedVerticesIsAWall) {
   const PlannerOptions o;  // gaps up to 14, within 1 of the chord
   EXPECT_TRUE(FrontierTargets(RoomWithAnOpenTop({6, 13, 20, 27, 34}), o).empty()) << "candidates every 7 units";
