@@ -1,6 +1,5 @@
 #include "experiments/search_policy.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace toponav::experiments {
@@ -35,13 +34,15 @@ std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapVi
   // The same place under a new id is given up again; grown ones come back, counted afresh.
   for (int id : given_up_.Update(view.frontiers)) dwell_.Reset(id);
   std::vector<planning::FrontierTarget> targets;
-  for (const auto& t : planning::FrontierTargets(view, planning_)) {
-    const auto& f = *std::find_if(view.frontiers.begin(), view.frontiers.end(),
-                                  [&](const mapping::Frontier& g) { return g.id == t.frontier_id; });
-    if (search_.close_buildings && region_ && planning::ClosesWallChain(f, view, planning_)) continue;
+  for (const auto& t : planning::FrontierTargets(view, planning_))
     if (!given_up_.Contains(t.frontier_id) && (!region_ || region_->Contains(t.point))) targets.push_back(t);
-  }
-  return targets;
+  if (!search_.close_buildings || !region_) return targets;
+  // Open worlds: a building's last side is no target.
+  const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(view, targets);
+  std::vector<planning::FrontierTarget> open;
+  for (size_t i = 0; i < targets.size(); ++i)
+    if (!planning::ClosesWallChain(*frontiers[i], view, planning_)) open.push_back(targets[i]);
+  return open;
 }
 
 bool SearchPolicy::Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view) {

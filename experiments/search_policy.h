@@ -4,9 +4,8 @@
 // go to the planner (for one agent the nearest frontier, or with search.tour the first of its shortest tour
 // through all of them; distinct frontiers for a team); agents keep their frontier while it stays competitive
 // (commitment); frontiers agents stand next to without them going away, or cannot get to, are given up;
-// stuck agents are nudged.
-// The search ends when no frontier is left ("explored") or none has been reachable for
-// search.unreachable_steps steps ("unreachable").  With search.block_when_stuck, where an agent's steps make
+// stuck agents are nudged.  The search ends when no frontier is left ("explored") or none has been reachable
+// for search.unreachable_steps steps ("unreachable").  With search.block_when_stuck, where an agent's steps make
 // no headway along its path the planners get a short wall across its way (planning::MotionBlocks); with
 // search.close_buildings, in open worlds a building's last side (planning::ClosesWallChain) is no target.
 #include <functional>

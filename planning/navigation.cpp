@@ -215,14 +215,26 @@ std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vect
 
 Path VisibilityGraph::Plan(const Vec2& start, const Vec2& goal) const { return PlanToMany(start, {goal})[0]; }
 
+namespace {
+
+// True if every point of 'f' lies within 'tol' of its chord, and the chord has a length.
+bool Straight(const mapping::Frontier& f, double tol) {
+  if (f.points.size() < 2) return false;
+  const Vec2 a = f.points.front(), b = f.points.back();
+  if (core::Distance(a, b) < 1e-9) return false;
+  for (const auto& p : f.points)
+    if (core::DistanceToSegment(p, {a, b}) > tol) return false;
+  return true;
+}
+
+}  // namespace
+
 bool AlongVertexRow(const mapping::Frontier& f, const mapping::MapView& view, const PlannerOptions& options) {
   const double tol = options.frontier_row_tolerance;
   if (options.frontier_row_gap <= 0 || f.points.size() < 2) return false;
   const Vec2 a = f.points.front(), b = f.points.back();
   const double length = core::Distance(a, b);
-  if (length < 1e-9) return false;
-  for (const auto& p : f.points)
-    if (core::DistanceToSegment(p, {a, b}) > tol) return false;  // bent: not a straight wall
+  if (!Straight(f, tol)) return false;  // bent: not a straight wall
   // Where the detected vertices next to the chord lie along it, with both ends counted -- but not an end where a
   // chain was cut at a gentle turn (an opening that goes on round the turn) unless a detected vertex sits there.
   // (A sharp one, a notch in known space, bounds it like a vertex.)
@@ -244,17 +256,15 @@ bool AlongVertexRow(const mapping::Frontier& f, const mapping::MapView& view, co
 bool ClosesWallChain(const mapping::Frontier& f, const mapping::MapView& view, const PlannerOptions& options) {
   constexpr double kSquareCos = 0.26;  // cos 75 degrees: a wall meeting the side within 15 degrees of square
   const double tol = options.frontier_row_tolerance;
-  if (f.points.size() < 2) return false;
+  if (!Straight(f, tol)) return false;
   const Vec2 a = f.points.front(), b = f.points.back();
-  for (const auto& p : f.points)
-    if (core::DistanceToSegment(p, {a, b}) > tol) return false;
   auto vertex_at = [&](const Vec2& p) {
     for (const auto& v : view.vertices)
       if (core::Distance(v.position, p) <= tol) return v.id;
     return -1;
   };
   const int from = vertex_at(a), to = vertex_at(b);
-  if (from < 0 || to < 0 || from == to || core::Distance(a, b) < 1e-9) return false;
+  if (from < 0 || to < 0 || from == to) return false;
   const Vec2 chord = (b - a) / core::Distance(a, b);
   std::map<int, std::vector<int>> next;
   for (const auto& w : view.walls) {
