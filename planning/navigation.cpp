@@ -289,20 +289,34 @@ bool ClosesWallChain(const mapping::Frontier& f, const mapping::MapView& view, c
 
 namespace {
 
-// The target for a frontier at 'point' on it, where its local direction is 'dir': 'frontier_setback' inside
-// known space (the point itself where known space is thinner than that).
+// True if the segment from a to b crosses none of the view's walls.
+bool CrossesNoWall(const mapping::MapView& view, const Vec2& a, const Vec2& b) {
+  for (const auto& w : view.walls)
+    if (core::SegmentsIntersect({a, b}, {w.pa, w.pb})) return false;
+  return true;
+}
+
+// The target for a frontier at 'point' on it, where its local direction is 'dir': on the known side (the
+// side known space lies on within 2 units, or within the setback if smaller), the deepest of 'frontier_setback',
+// its half, quarter, ... (down to that probe depth) that lies in known space with no wall between it and
+// the frontier; the point itself where known space is thinner than the probe.
 FrontierTarget TargetAt(const mapping::MapView& view, const mapping::Frontier& f, const Vec2& point, const Vec2& dir,
                         const PlannerOptions& options) {
-  Vec2 target = point, outward{-dir.y, dir.x};
+  const Vec2 normal{-dir.y, dir.x};
+  const double probe = std::min(options.frontier_setback, 2.0);
   for (const double side : {1.0, -1.0}) {
-    const Vec2 p = point + Vec2{-dir.y, dir.x} * (side * options.frontier_setback);
-    if (InKnown(view, p)) {
-      target = p;
-      outward = Vec2{-dir.y, dir.x} * -side;
-      break;
+    if (!InKnown(view, point + normal * (side * probe))) continue;
+    double depth = probe;
+    for (double d = options.frontier_setback; d > probe; d *= 0.5) {
+      const Vec2 p = point + normal * (side * d);
+      if (InKnown(view, p) && CrossesNoWall(view, point, p)) {
+        depth = d;
+        break;
+      }
     }
+    return {f.id, point + normal * (side * depth), f.length, normal * -side};
   }
-  return {f.id, target, f.length, outward};
+  return {f.id, point, f.length, normal};
 }
 
 // The target at the frontier's midpoint (the direction of the segment under it).

@@ -15,7 +15,11 @@ struct PlannerOptions {
   double inflation_radius = 4.8;   // graph nodes sit this far from map vertices (0.8 * the reference's rho = 6)
   double clearance = 1.5;          // graph edges keep at least this distance from map walls
   double frontier_min_length = 8.0;  // shorter frontiers (slivers along walls) are ignored
-  double frontier_setback = 2.0;   // a frontier target is this far inside known space from its midpoint
+  // A frontier target lies this far inside known space from the frontier's midpoint, on a line square to it
+  // (or half, a quarter, ... as far where known space is thinner or a map wall stands between; never less
+  // than min(2, this)): from farther back an agent sees a frontier that lies along an unaccepted wall head on,
+  // not edge on.
+  double frontier_setback = 2.0;
   // A straight frontier (within frontier_row_tolerance of its chord) with no stretch longer than
   // frontier_row_gap between detected vertices along it (map vertices and seen candidates; its two ends
   // count as such) is taken for a wall the map has not accepted yet and gets no target (so a straight
@@ -69,8 +73,8 @@ class VisibilityGraph {
 // True if p lies in the view's known space (its double-precision polygons, as the graph's rules use them).
 bool InKnown(const mapping::MapView& view, const core::Vec2& p);
 
-// Where an agent goes to explore a frontier: a point 'frontier_setback' inside known space from its midpoint
-// (the midpoint itself where known space is thinner than that).
+// Where an agent goes to explore a frontier: a point up to 'frontier_setback' inside known space from its
+// midpoint, with no map wall between (the midpoint itself where known space is thinner than min(2, setback)).
 struct FrontierTarget {
   int frontier_id = 0;
   core::Vec2 point;

@@ -95,11 +95,30 @@ TEST(Frontiers, TargetsLieInsideKnownSpace) {
   PlannerOptions strict;
   strict.frontier_min_length = 17.0;
   EXPECT_TRUE(FrontierTargets(view, strict).empty());
+  PlannerOptions thin;
+  thin.frontier_setback = 0.5;  // shallower than the 2-unit probe: exactly that deep
+  EXPECT_NEAR(FrontierTargets(view, thin)[0].point.x, 19.5, 1e-12);
+}
+
+TEST(Frontiers, ATargetDeeperThanKnownSpaceStepsBackOnlyAsFarAsKnownSpaceGoes) {
+  const auto view = ThreeDoorRoom();  // 20 wide: the frontier at x = 20 looks in from x = 0
   PlannerOptions deep;
-  deep.frontier_setback = 30.0;  // deeper than the room: the midpoint itself
-  const auto mids = FrontierTargets(view, deep);
-  ASSERT_EQ(mids.size(), 3u);
-  EXPECT_NEAR(mids[0].point.x, 20.0, 1e-12);
+  deep.frontier_setback = 30.0;  // deeper than the room: its half, 15, is the deepest point inside
+  const auto targets = FrontierTargets(view, deep);
+  ASSERT_EQ(targets.size(), 3u);
+  EXPECT_NEAR(targets[0].point.x, 5.0, 1e-12);
+  EXPECT_NEAR(targets[0].point.y, 10.0, 1e-12);
+  EXPECT_NEAR(targets[0].outward.x, 1.0, 1e-12) << "outward still points out of the room";
+}
+
+TEST(Frontiers, ATargetNeverStepsBackAcrossAWall) {
+  // A wall across the room at x = 10: known space goes on behind it, but a target there would be seen from
+  // behind the wall; the deepest point on the frontier's side of it is the quarter, 20 - 7.5.
+  auto view = ThreeDoorRoom();
+  view.walls.push_back({-1, -1, {10, 1}, {10, 19}, 1.0});
+  PlannerOptions deep;
+  deep.frontier_setback = 30.0;
+  EXPECT_NEAR(FrontierTargets(view, deep)[0].point.x, 12.5, 1e-12);
 }
 
 // A room [0,40]x[0,20] whose top side y = 20 is a frontier: the map has not accepted the wall there.
