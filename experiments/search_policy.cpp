@@ -77,7 +77,7 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   const mapping::MapView& view = *state.view;
   original_ = Targets(view);
   targets_ = original_;
-  dwell_.PushThrough(&targets_, planning_.frontier_setback + search_.push_distance, region_);
+  dwell_.PushThrough(&targets_, search_.push_distance, region_);
   // Optimistic: unknown space counts as free (the reference plans on map walls only); the agent finds out on
   // the way and the plan is redone every step.
   std::optional<mapping::MapView> blocked;  // the view with the motion blocks, when there are any

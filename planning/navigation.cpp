@@ -314,9 +314,9 @@ FrontierTarget TargetAt(const mapping::MapView& view, const mapping::Frontier& f
         break;
       }
     }
-    return {f.id, point + normal * (side * depth), f.length, normal * -side};
+    return {f.id, point + normal * (side * depth), f.length, normal * -side, depth};
   }
-  return {f.id, point, f.length, normal};
+  return {f.id, point, f.length, normal, 0.0};
 }
 
 // The target at the frontier's midpoint (the direction of the segment under it).

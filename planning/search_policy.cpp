@@ -69,7 +69,7 @@ void FrontierDwell::PushThrough(std::vector<FrontierTarget>* targets, double dis
                                 const std::optional<core::Aabb2>& region) const {
   for (auto& t : *targets) {
     if (steps(t.frontier_id) <= give_up_steps_ / 2) continue;
-    const Vec2 pushed = t.point + t.outward * distance;
+    const Vec2 pushed = t.point + t.outward * (t.depth + distance);
     if (!region || region->Contains(pushed)) t.point = pushed;  // never out of the search region
   }
 }

@@ -47,8 +47,8 @@ class FrontierDwell {
   bool Count(int id);
   void Reset(int id) { steps_[id] = 0; }
   int steps(int id) const;
-  // Moves the target of every frontier dwelt at past half of give_up_steps 'distance' along its outward
-  // normal, unless that leaves 'region' (when given).
+  // Moves the target of every frontier dwelt at past half of give_up_steps to 'distance' beyond the frontier
+  // (its depth plus 'distance' along its outward normal), unless that leaves 'region' (when given).
   void PushThrough(std::vector<FrontierTarget>* targets, double distance,
                    const std::optional<core::Aabb2>& region) const;
 

@@ -100,6 +100,17 @@ TEST(FrontierDwell, TargetsDweltAtPastHalfTheStepsArePushedThroughButNotOutOfThe
   EXPECT_EQ(targets[2].point, (Vec2{50, 106})) << "no region: no limit";
 }
 
+TEST(FrontierDwell, APushedTargetLandsTheSameDistanceBeyondItsFrontierHoweverDeepItStood) {
+  FrontierDwell dwell(4, 4.0);
+  for (int k = 0; k < 3; ++k) dwell.Count(1), dwell.Count(2);
+  std::vector<FrontierTarget> targets{Target(1, {10, 10}, {0, 1}), Target(2, {40, 3}, {0, 1})};
+  targets[0].depth = 0.0;  // the frontier runs along y = 10
+  targets[1].depth = 7.0;  // a target standing 7 back from its frontier along y = 10
+  dwell.PushThrough(&targets, 6.0, std::nullopt);
+  EXPECT_EQ(targets[0].point, (Vec2{10, 16}));
+  EXPECT_EQ(targets[1].point, (Vec2{40, 16}));
+}
+
 TEST(StuckMonitor, NoHeadwayIsNoMotionOnAPathNoPathOrPacing) {
   const StuckMonitor m(1, 3, 2.0);
   const std::vector<Vec2> trail{{0, 0}, {2, 0}, {4, 0}, {6, 0}, {8, 0}, {10, 0}, {12, 0}};
