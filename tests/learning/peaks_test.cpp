@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 namespace toponav::learning {
 namespace {
 
@@ -50,22 +48,6 @@ TEST(Peaks, DecodedDetectionsCarryTheCellsRangeBearingLabelsAndTheReportedCovari
   EXPECT_NEAR(d[1].labels[1], 0.7, 1e-6);
   EXPECT_NEAR(d[1].polar.xx, 25.0, 1e-9);
   EXPECT_NEAR(d[1].polar.yy, 0.125 * 0.125, 1e-12);
-}
-
-TEST(Peaks, AVertexSpreadOverTwoCellsIsPlacedBetweenThem) {
-  const core::RangeBearingGrid g;
-  std::vector<float> p(g.size(), 0.0f), labels(4 * g.size(), 0.25f);
-  p[g.Index(3, 96)] = 0.9f;  // range 12.5, bearing pi/2
-  p[g.Index(4, 96)] = 0.6f;  // the next range bin: the centroid lies 0.6 / 1.5 of a bin beyond row 3
-  p[g.Index(10, 0)] = 0.8f;  // bearing -pi, with its neighbour across the wrap (column 127)
-  p[g.Index(10, 127)] = 0.4f;
-  const auto d = DecodeDetections(p, labels, g, DecodeOptions{});
-  ASSERT_EQ(d.size(), 2u);
-  const double bin = 2 * core::kPi / g.cols;
-  EXPECT_NEAR(d[0].range, 12.5 + 0.4 * g.RangeStep(), 1e-6);
-  EXPECT_NEAR(d[0].bearing, core::kPi / 2, 1e-9) << "no bearing neighbours: the column's own bearing";
-  EXPECT_NEAR(d[1].range, 34.375, 1e-6) << "a lone row: no range offset";
-  EXPECT_NEAR(d[1].bearing, core::kPi - bin / 3, 1e-6) << "a third of a bin toward column 127, across the wrap";
 }
 
 }  // namespace
