@@ -41,6 +41,21 @@ void RefreshStars(MapCore* m, double tolerance) {
   }
 }
 
+namespace {
+
+// True if an observation was made inside the polygon of the chain of vertices 'chain' closed between its
+// ends: no one stands inside a building, so such a chain is a recess seen from within, not a building.
+bool EnclosesAPose(const MapCore& m, const std::vector<int>& chain) {
+  core::Ring ring;
+  for (int id : chain) ring.push_back(m.Pos(id));
+  const core::Aabb2 box = core::Bounds(ring);
+  for (const Obs& ob : m.obs)
+    if (box.Contains(ob.pose.position()) && core::Contains(ring, ob.pose.position())) return true;
+  return false;
+}
+
+}  // namespace
+
 std::vector<Wall> ClosingWalls(const MapCore& m, const MapState& ms) {
   std::vector<Wall> out;
   if (!m.o.open_region) return out;
@@ -56,6 +71,7 @@ std::vector<Wall> ClosingWalls(const MapCore& m, const MapState& ms) {
     int prev = -1, cur = start, length = 0;
     bool simple = true;
     seen.insert(cur);
+    std::vector<int> chain{cur};
     while (true) {
       const auto& n = adj.at(cur);
       int next = -1;
@@ -73,9 +89,11 @@ std::vector<Wall> ClosingWalls(const MapCore& m, const MapState& ms) {
       cur = next;
       ++length;
       seen.insert(cur);
+      chain.push_back(cur);
       if (adj.at(cur).size() == 1) break;
     }
-    if (simple && length >= 2 && adj.at(cur).size() == 1) out.push_back({std::min(start, cur), std::max(start, cur)});
+    if (simple && length >= 2 && adj.at(cur).size() == 1 && !EnclosesAPose(m, chain))
+      out.push_back({std::min(start, cur), std::max(start, cur)});
   }
   std::sort(out.begin(), out.end());
   return out;

@@ -21,7 +21,8 @@ void RefreshStars(MapCore* m, double tolerance);
 // Open worlds: obstacles are closed polygons, so a chain of map walls that is still open (its last wall not
 // seen well enough yet) is closed between its two ends for the sight lines of known space -- otherwise the
 // hypothetical observation would see through the building to the chain's far vertices.  Planning and the
-// posterior use the map's walls only.  Closed worlds: none.
+// posterior use the map's walls only.  A chain whose closed polygon holds an observation's pose is a recess
+// seen from within, not a building, and stays open.  Closed worlds: none.
 std::vector<Wall> ClosingWalls(const MapCore& m, const MapState& ms);
 
 // The star polygon of a hypothetical observation H (vertex ids by bearing) from 'ob's pose: in an open region,

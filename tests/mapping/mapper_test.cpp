@@ -264,6 +264,29 @@ TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
   EXPECT_FALSE(MapOfBuildingSeenFromBelow(closed).known_set->Contains({20, 20}));
 }
 
+// An agent standing in a V-shaped recess of a building (walls C-B and B-A) sees out of it through the gap
+// between the recess's ends: a chain of walls around the agent's own pose is not closed like a building.
+TEST(Mapper, OpenRegionChainAroundTheAgentIsARecessNotABuilding) {
+  MapperOptions o;
+  o.world_bounds = core::Aabb2{{-50, -50}, {50, 50}};
+  o.open_region = o.world_bounds;
+  Mapper m(o);
+  core::Rng rng(3);
+  const Vec2 a{-10, 0}, b{0, 8}, c{10, 0};
+  for (int i = 0; i < 20; ++i) {
+    const core::Pose2 pose{-1.0 + 0.1 * i, 3, 0.0};
+    m.AddObservation(Obs(pose, {Det(pose, c, core::VertexLabel::kRightGap), Det(pose, b, core::VertexLabel::kCorner),
+                                Det(pose, a, core::VertexLabel::kLeftGap)}));
+  }
+  m.SampleMostLikelyMap(rng);
+  const MapView view = m.View();
+  ASSERT_EQ(view.walls.size(), 2u);
+  ASSERT_TRUE(view.known_set);
+  EXPECT_TRUE(view.known_set->Contains({0, 5})) << "the recess";
+  EXPECT_TRUE(view.known_set->Contains({0, -20})) << "the open ground the recess opens onto";
+  EXPECT_FALSE(view.known_set->Contains({0, 15})) << "behind the recess's walls";
+}
+
 TEST(Mapper, FrontierIsSplitWhereItTurnsSharply) {
   auto frontiers = [](double split_angle) {
     MapperOptions o;
