@@ -215,6 +215,13 @@ int RunTrialCommand(const TrialArgs& a) {
              "frontiers given up {}, motion blocks {}, {:.1f} s -> {}\n",
              seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
              r.give_ups, r.blocks.size(), r.wall_time_s, (fs::path(a.out) / "trial.png").string());
+  if (!w.has_boundary()) {
+    const auto b = experiments::BreakDownBuildingPlacement(w, view);
+    std::string per;
+    for (double x : b.building_iou) per += fmt::format(" {:.3f}", x);
+    fmt::print("buildings' IoU with the holes that overlap them:{}; holes overlapping no building: {:.1f} units^2\n",
+               per, b.spurious_area);
+  }
   return 0;
 }
 

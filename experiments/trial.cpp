@@ -21,6 +21,27 @@ double BuildingPlacementIoU(const core::World& world, const mapping::MapView& ma
   return mapping::IoU(found, mapping::PolygonSet::JoinAll(buildings));
 }
 
+BuildingPlacementBreakdown BreakDownBuildingPlacement(const core::World& world, const mapping::MapView& map) {
+  BuildingPlacementBreakdown out;
+  const std::vector<mapping::PolygonSet> holes = KnownSet(map).Holes().Components();
+  std::vector<char> overlaps(holes.size(), 0);
+  for (const auto& o : world.obstacles) {
+    const mapping::PolygonSet building = mapping::PolygonSet::FromRing(o);
+    std::vector<const mapping::PolygonSet*> found;
+    for (size_t h = 0; h < holes.size(); ++h) {
+      mapping::PolygonSet common = holes[h];
+      common.Intersect(building);
+      if (common.Area() <= 0.0) continue;
+      overlaps[h] = 1;
+      found.push_back(&holes[h]);
+    }
+    out.building_iou.push_back(found.empty() ? 0.0 : mapping::IoU(mapping::PolygonSet::JoinAll(found), building));
+  }
+  for (size_t h = 0; h < holes.size(); ++h)
+    if (!overlaps[h]) out.spurious_area += holes[h].Area();
+  return out;
+}
+
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,
                            mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();

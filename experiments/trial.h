@@ -55,4 +55,12 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
 // open ground the search never needed to see (far from every building) does not count.
 double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map);
 
+// Where that IoU is lost: per true building, the IoU of it and the holes that overlap it (0 for a building
+// no hole overlaps), and the area of holes that overlap no building.
+struct BuildingPlacementBreakdown {
+  std::vector<double> building_iou;  // per world obstacle
+  double spurious_area = 0.0;        // world units^2
+};
+BuildingPlacementBreakdown BreakDownBuildingPlacement(const core::World& world, const mapping::MapView& map);
+
 }  // namespace toponav::experiments

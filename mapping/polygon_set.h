@@ -38,6 +38,8 @@ class PolygonSet {
   bool empty() const;
   double Area() const;
   std::vector<core::Polygon> Polygons() const;
+  // Each connected polygon (with its holes) as a set of its own, exactly.
+  std::vector<PolygonSet> Components() const;
   // True if p lies in the interior or on the boundary.
   bool Contains(const core::Vec2& p) const;
 

@@ -130,6 +130,14 @@ double PolygonSet::Area() const {
   return a;
 }
 
+std::vector<PolygonSet> PolygonSet::Components() const {
+  std::vector<CPolygonWithHoles> pwhs;
+  impl_->set.polygons_with_holes(std::back_inserter(pwhs));
+  std::vector<PolygonSet> out(pwhs.size());
+  for (size_t i = 0; i < pwhs.size(); ++i) out[i].impl_->set.insert(pwhs[i]);
+  return out;
+}
+
 std::vector<core::Polygon> PolygonSet::Polygons() const {
   std::vector<CPolygonWithHoles> pwhs;
   impl_->set.polygons_with_holes(std::back_inserter(pwhs));

@@ -61,6 +61,23 @@ TEST(BuildingPlacementIoU, CountsEnclosedBuildingsOnly) {
               200.0 / 236.0, 1e-9);
 }
 
+// The breakdown says which building the map got wrong and how much enclosed ground is no building.
+TEST(BuildingPlacementIoU, BreakdownGivesEachBuildingsIoUAndTheSpuriousArea) {
+  core::World w;
+  w.kind = core::WorldKind::kOfficePark;
+  w.obstacles = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{40, 0}, {50, 0}, {50, 10}, {40, 10}}};
+  w.bounds = core::Aabb2{{-20, -20}, {70, 30}};
+  mapping::MapView v;
+  const core::Ring shifted{{0, 10}, {12, 10}, {12, 0}, {0, 0}};  // the first building 2 units too wide
+  const core::Ring spurious{{22, 8}, {28, 8}, {28, 2}, {22, 2}};
+  v.known_space = {{{{-5, -5}, {35, -5}, {35, 15}, {-5, 15}}, {shifted, spurious}}};
+  const BuildingPlacementBreakdown b = BreakDownBuildingPlacement(w, v);
+  ASSERT_EQ(b.building_iou.size(), 2u);
+  EXPECT_NEAR(b.building_iou[0], 100.0 / 120.0, 1e-9);
+  EXPECT_EQ(b.building_iou[1], 0.0) << "never enclosed";
+  EXPECT_NEAR(b.spurious_area, 36.0, 1e-9);
+}
+
 TEST(TrialVideo, HasOneFramePerStepAndTheFinalMap) {
   const Config cfg;
   const core::World w = SmallLabyrinth(101);
