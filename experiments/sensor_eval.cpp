@@ -52,6 +52,9 @@ void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& tr
     const double dr = std::abs(d.range - t.range), db = std::abs(core::WrapAngle(d.bearing - t.bearing));
     e->range_error_sum += dr;
     e->bearing_error_sum += db;
+    const double toward_gap = t.label == core::VertexLabel::kRightGap ? -1.0 : 1.0;
+    e->range_bias_sum[size_t(real)] += d.range - t.range;
+    e->bearing_bias_sum[size_t(real)] += toward_gap * core::WrapAngle(d.bearing - t.bearing);
     e->range_sq_sum += dr * dr;
     e->bearing_sq_sum += db * db;
   }

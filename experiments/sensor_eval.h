@@ -27,6 +27,9 @@ struct SensorEval {
   // Recall by the true vertex's range (bands split at kRangeEdges) and by its true label.
   static constexpr std::array<double, 3> kRangeEdges{10.0, 25.0, 50.0};
   std::array<int, 4> true_by_range{}, matched_by_range{}, true_by_label{};
+  // Signed errors (detected - true) of matches by true label; bearing toward the gap side for the gap labels
+  // (positive: the vertex is seen out in the open, off the wall's end), counter-clockwise for the others.
+  std::array<double, 4> range_bias_sum{}, bearing_bias_sum{};
   double seconds = 0;
   double precision() const { return detections > 0 ? double(matches) / detections : 0.0; }
   double recall() const { return true_vertices > 0 ? double(matches) / true_vertices : 0.0; }
@@ -36,6 +39,15 @@ struct SensorEval {
   double mean_bearing_error() const { return matches > 0 ? bearing_error_sum / matches : 0.0; }
   double recall_in_band(size_t b) const {
     return true_by_range[b] > 0 ? double(matched_by_range[b]) / true_by_range[b] : 0.0;
+  }
+  int matches_of_label(size_t l) const {
+    int found = 0;
+    for (int n : confusion[l]) found += n;
+    return found;
+  }
+  double range_bias_of_label(size_t l) const { return matches_of_label(l) > 0 ? range_bias_sum[l] / matches_of_label(l) : 0.0; }
+  double bearing_bias_of_label(size_t l) const {
+    return matches_of_label(l) > 0 ? bearing_bias_sum[l] / matches_of_label(l) : 0.0;
   }
   double recall_of_label(size_t l) const {
     int found = 0;

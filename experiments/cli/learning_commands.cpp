@@ -220,6 +220,11 @@ int RunEvalSensor(const EvalSensorArgs& a) {
              "point {:.3f} ({})\n",
              e.recall_of_label(0), e.true_by_label[0], e.recall_of_label(1), e.true_by_label[1], e.recall_of_label(2),
              e.true_by_label[2], e.recall_of_label(3), e.true_by_label[3]);
+  fmt::print("  bias by true label (detected - true; bearing toward the gap for gaps, else counter-clockwise): ");
+  for (size_t l = 0; l < 4; ++l)
+    fmt::print("{}{} range {:+.2f} bearing {:+.4f}", l ? ", " : "", core::ToString(core::VertexLabel(l)),
+               e.range_bias_of_label(l), e.bearing_bias_of_label(l));
+  fmt::print("\n");
   const std::string yaml = experiments::NoisySensorYaml(e, on);
   fmt::print("{}", yaml);
   if (!a.out.empty()) WriteTextFile(a.out, yaml);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace toponav::experiments {
 namespace {
 
@@ -25,6 +27,11 @@ TEST(SensorEval, AnExactSensorScoresOne) {
   EXPECT_NEAR(e.precision(), 1.0, 1e-9);
   EXPECT_NEAR(e.label_accuracy(), 1.0, 1e-9);
   EXPECT_LT(e.mean_range_error(), 1.6) << "range quantized to 3.125-unit bins";
+  for (size_t l = 0; l < 3; ++l) {  // quantization alone biases neither range nor bearing
+    EXPECT_GT(e.matches_of_label(l), 50) << "label " << l;
+    EXPECT_LT(std::abs(e.range_bias_of_label(l)), 0.25) << "label " << l;
+    EXPECT_LT(std::abs(e.bearing_bias_of_label(l)), 0.004) << "label " << l;
+  }
 }
 
 TEST(SensorEval, TheNoisySensorsConfiguredRatesAreMeasuredBack) {
