@@ -158,6 +158,15 @@ int RunNavigationCommand(const TrialArgs& a) {
   return 0;
 }
 
+// Open worlds: where the building-placement IoU is lost (each building's IoU, spurious enclosed ground).
+void PrintBuildingPlacement(const core::World& w, const mapping::MapView& view) {
+  const auto b = experiments::BreakDownBuildingPlacement(w, view);
+  std::string per;
+  for (double x : b.building_iou) per += fmt::format(" {:.3f}", x);
+  fmt::print("buildings' IoU with the holes that overlap them:{}; holes overlapping no building: {:.1f} units^2\n", per,
+             b.spurious_area);
+}
+
 int RunTrialCommand(const TrialArgs& a) {
   if (!a.planner.empty()) return RunNavigationCommand(a);
   const experiments::Config cfg = LoadOrDefault(a.config);
@@ -215,13 +224,7 @@ int RunTrialCommand(const TrialArgs& a) {
              "frontiers given up {}, motion blocks {}, {:.1f} s -> {}\n",
              seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
              r.give_ups, r.blocks.size(), r.wall_time_s, (fs::path(a.out) / "trial.png").string());
-  if (!w.has_boundary()) {
-    const auto b = experiments::BreakDownBuildingPlacement(w, view);
-    std::string per;
-    for (double x : b.building_iou) per += fmt::format(" {:.3f}", x);
-    fmt::print("buildings' IoU with the holes that overlap them:{}; holes overlapping no building: {:.1f} units^2\n",
-               per, b.spurious_area);
-  }
+  if (!w.has_boundary()) PrintBuildingPlacement(w, view);
   return 0;
 }
 

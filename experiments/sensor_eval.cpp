@@ -52,9 +52,8 @@ void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& tr
     const double dr = std::abs(d.range - t.range), db = std::abs(core::WrapAngle(d.bearing - t.bearing));
     e->range_error_sum += dr;
     e->bearing_error_sum += db;
-    const double toward_gap = t.label == core::VertexLabel::kRightGap ? -1.0 : 1.0;
     e->range_bias_sum[size_t(real)] += d.range - t.range;
-    e->bearing_bias_sum[size_t(real)] += toward_gap * core::WrapAngle(d.bearing - t.bearing);
+    e->bearing_bias_sum[size_t(real)] += SignedBearingError(t.label, d.bearing, t.bearing);
     e->range_sq_sum += dr * dr;
     e->bearing_sq_sum += db * db;
   }
@@ -68,6 +67,12 @@ void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& tr
 }
 
 }  // namespace
+
+double SignedBearingError(core::VertexLabel true_label, double detected_bearing, double true_bearing) {
+  // A right gap's wall runs on its counter-clockwise side, so its gap is clockwise.
+  const double toward_gap = true_label == core::VertexLabel::kRightGap ? -1.0 : 1.0;
+  return toward_gap * core::WrapAngle(detected_bearing - true_bearing);
+}
 
 SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/detection.h"
 #include "core/world.h"
 #include "experiments/config.h"
 
@@ -45,18 +46,21 @@ struct SensorEval {
     for (int n : confusion[l]) found += n;
     return found;
   }
-  double range_bias_of_label(size_t l) const { return matches_of_label(l) > 0 ? range_bias_sum[l] / matches_of_label(l) : 0.0; }
+  double range_bias_of_label(size_t l) const {
+    return matches_of_label(l) > 0 ? range_bias_sum[l] / matches_of_label(l) : 0.0;
+  }
   double bearing_bias_of_label(size_t l) const {
     return matches_of_label(l) > 0 ? bearing_bias_sum[l] / matches_of_label(l) : 0.0;
   }
   double recall_of_label(size_t l) const {
-    int found = 0;
-    for (int n : confusion[l]) found += n;
-    return true_by_label[l] > 0 ? double(found) / true_by_label[l] : 0.0;
+    return true_by_label[l] > 0 ? double(matches_of_label(l)) / true_by_label[l] : 0.0;
   }
 };
 
 SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& options);
+// A detection's signed bearing error (radians, detected - true, wrapped) as the bias sums count it: toward
+// the gap side for the gap labels (positive: out in the open, off the wall's end), else counter-clockwise.
+double SignedBearingError(core::VertexLabel true_label, double detected_bearing, double true_bearing);
 // The measured rates as a `sensor:` YAML block for the noisy sensor (kind noisy), with a comment saying
 // what was measured.
 std::string NoisySensorYaml(const SensorEval& e, const std::string& measured_on);

@@ -134,7 +134,7 @@ std::vector<PolygonSet> PolygonSet::Components() const {
   std::vector<CPolygonWithHoles> pwhs;
   impl_->set.polygons_with_holes(std::back_inserter(pwhs));
   std::vector<PolygonSet> out(pwhs.size());
-  for (size_t i = 0; i < pwhs.size(); ++i) out[i].impl_->set.insert(pwhs[i]);
+  for (size_t i = 0; i < pwhs.size(); ++i) out[i].impl_->set.join(pwhs[i]);
   return out;
 }
 

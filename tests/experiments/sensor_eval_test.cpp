@@ -34,6 +34,15 @@ TEST(SensorEval, AnExactSensorScoresOne) {
   }
 }
 
+// Bearing bias is counted toward the gap for gap labels: a right gap's gap is clockwise (its wall runs
+// counter-clockwise), a left gap's counter-clockwise; other labels count counter-clockwise.
+TEST(SensorEval, SignedBearingErrorPointsTowardTheGap) {
+  EXPECT_NEAR(SignedBearingError(core::VertexLabel::kRightGap, 0.99, 1.0), 0.01, 1e-12);
+  EXPECT_NEAR(SignedBearingError(core::VertexLabel::kLeftGap, 1.01, 1.0), 0.01, 1e-12);
+  EXPECT_NEAR(SignedBearingError(core::VertexLabel::kCorner, 0.99, 1.0), -0.01, 1e-12);
+  EXPECT_NEAR(SignedBearingError(core::VertexLabel::kLeftGap, -3.14, 3.14), 2 * core::kPi - 6.28, 1e-12) << "wraps";
+}
+
 TEST(SensorEval, TheNoisySensorsConfiguredRatesAreMeasuredBack) {
   Config c;
   c.sensor.noisy.miss_probability = 0.3;
