@@ -148,8 +148,9 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
     mapping::MapView view;
     std::vector<std::vector<core::Vec2>> paths;
     MapPictureExtras extras;
-    line = RunTrial(config, id, w, on_step, &view, &paths, &extras).dump();
-    if (config.bench.pictures) {
+    const json record = RunTrial(config, id, w, on_step, &view, &paths, &extras);
+    line = record.dump();
+    if (WantsPicture(config.bench.pictures, record.at("success").get<bool>(), id.seed, config.bench.first_seed)) {
       const fs::path dir = fs::path(o.out_dir) / "pictures";
       fs::create_directories(dir);
       DrawMapPicture(w, view, paths, config.picture, (dir / (name + ".png")).string(), extras);
@@ -355,6 +356,10 @@ void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<T
 }
 
 }  // namespace
+
+bool WantsPicture(PictureSet set, bool success, uint64_t seed, uint64_t first_seed) {
+  return set == PictureSet::kAll || (set == PictureSet::kFailures && (!success || seed == first_seed));
+}
 
 BatchSummary RunBatch(const Config& config, const BatchOptions& o, const std::vector<TrialId>& all) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -49,6 +49,10 @@ struct BatchSummary {
 
 BatchSummary RunBatch(const Config& config, const BatchOptions& options, const std::vector<TrialId>& trials);
 
+// Whether a finished trial gets its final picture under bench.pictures (failures: failed trials and the
+// batch's first seed of every row).
+bool WantsPicture(PictureSet set, bool success, uint64_t seed, uint64_t first_seed);
+
 // A stamp for BatchOptions::stamp: a hash of the running program's file, the config file's text and the
 // batch's trial set (so an output directory holds one batch).
 std::string BatchStamp(const std::string& config_path, const std::vector<TrialId>& trials);

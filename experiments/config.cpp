@@ -77,7 +77,6 @@ const core::OptionFields<BenchOptions>& BenchOptions::Fields() {
       {"num_seeds", &O::num_seeds, 0, 1000000},
       {"max_steps", &O::max_steps, 1, 100000},
       {"mcmc_every", &O::mcmc_every, 0, 100000},
-      {"pictures", &O::pictures},
       {"videos", &O::videos},
   };
   return fields;
@@ -200,6 +199,12 @@ void ReadBench(YamlSection b, BenchOptions* bench) {
   }
   b.Read("first_seed", &bench->first_seed);
   b.ReadFields(bench, BenchOptions::Fields());
+  std::string pictures = bench->pictures == PictureSet::kNone ? "false" : bench->pictures == PictureSet::kAll ? "true" : "failures";
+  b.Read("pictures", &pictures);
+  if (pictures == "true") bench->pictures = PictureSet::kAll;
+  else if (pictures == "false") bench->pictures = PictureSet::kNone;
+  else if (pictures == "failures") bench->pictures = PictureSet::kFailures;
+  else b.Fail("pictures", pictures, "expected true, false or failures");
   b.Finish();
 }
 

@@ -36,6 +36,9 @@ struct BenchRow {
   std::string planner;  // "" (a search) or a goal-directed planner: "optimistic", "oracle", "lsp"
 };
 
+// Which trials of a bench get a final picture (bench.pictures: true, false or failures).
+enum class PictureSet { kNone, kAll, kFailures };
+
 struct BenchOptions {
   std::string name = "search";
   std::vector<BenchRow> rows;
@@ -43,7 +46,9 @@ struct BenchOptions {
   int num_seeds = 0;
   int max_steps = 400;
   int mcmc_every = 5;
-  bool pictures = true;          // a final PNG per trial
+  // A final PNG per trial (true), none (false), or only of failed trials and each row's first seed
+  // (failures: a few representative pictures to commit, not one per trial).
+  PictureSet pictures = PictureSet::kAll;
   bool videos = false;           // an MP4 of every trial (videos/<row>_s<seed>.mp4; slow: one frame a step)
   static const core::OptionFields<BenchOptions>& Fields();  // the numeric and boolean keys (under bench:)
 };

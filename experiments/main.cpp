@@ -265,13 +265,15 @@ struct BenchArgs {
 };
 
 int RunBench(BenchArgs a) {
-  const experiments::Config cfg = experiments::LoadConfig(a.config);
+  experiments::Config cfg = experiments::LoadConfig(a.config);
   if (cfg.bench.rows.empty()) throw core::ConfigError(a.config, "bench.rows", "[]", "list at least one row");
+  const std::vector<uint64_t> seed_override = a.seeds.empty() ? std::vector<uint64_t>{} : experiments::ParseSeeds(a.seeds);
+  // (pictures: failures also draws each row's first seed)
+  if (!seed_override.empty()) cfg.bench.first_seed = *std::min_element(seed_override.begin(), seed_override.end());
   a.batch.out_dir = a.out.empty() ? "results/" + cfg.bench.name : a.out;
   a.batch.progress = !a.quiet;
   if (!a.shard.empty()) experiments::ParseShard(a.shard, &a.batch.shard_index, &a.batch.shard_count);
-  const auto trials =
-      experiments::ListTrials(cfg.bench, a.seeds.empty() ? std::vector<uint64_t>{} : experiments::ParseSeeds(a.seeds));
+  const auto trials = experiments::ListTrials(cfg.bench, seed_override);
   a.batch.stamp = experiments::BatchStamp(a.config, trials);
   fmt::print("toponav bench {}: {} trials ({} rows), results in {}\n", cfg.bench.name, trials.size(), cfg.bench.rows.size(),
              a.batch.out_dir);

@@ -52,6 +52,24 @@ int CountLines(const std::string& dir) {
   return n;
 }
 
+TEST(Batch, PicturesOfFailuresAreFailedTrialsAndEachRowsFirstSeed) {
+  EXPECT_TRUE(WantsPicture(PictureSet::kAll, true, 12, 10));
+  EXPECT_FALSE(WantsPicture(PictureSet::kNone, false, 10, 10));
+  EXPECT_TRUE(WantsPicture(PictureSet::kFailures, false, 12, 10));
+  EXPECT_TRUE(WantsPicture(PictureSet::kFailures, true, 10, 10)) << "a representative success";
+  EXPECT_FALSE(WantsPicture(PictureSet::kFailures, true, 12, 10));
+  // The YAML key takes true, false or failures, and names itself on anything else.
+  EXPECT_EQ(ParseConfig("bench:\n  pictures: failures\n", "p.yaml").bench.pictures, PictureSet::kFailures);
+  EXPECT_EQ(ParseConfig("bench:\n  pictures: false\n", "p.yaml").bench.pictures, PictureSet::kNone);
+  EXPECT_EQ(ParseConfig("bench:\n  pictures: true\n", "p.yaml").bench.pictures, PictureSet::kAll);
+  try {
+    ParseConfig("bench:\n  pictures: some\n", "p.yaml");
+    FAIL() << "accepted pictures: some";
+  } catch (const core::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("bench.pictures"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Batch, ResumesWithoutRedoingOrLosingTrials) {
   const Config cfg = TinyBench();
   const auto trials = ListTrials(cfg.bench);
