@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -199,12 +201,12 @@ void ReadBench(YamlSection b, BenchOptions* bench) {
   }
   b.Read("first_seed", &bench->first_seed);
   b.ReadFields(bench, BenchOptions::Fields());
-  std::string pictures = bench->pictures == PictureSet::kNone ? "false" : bench->pictures == PictureSet::kAll ? "true" : "failures";
+  static constexpr std::array<const char*, 3> kPictureSets{"false", "true", "failures"};  // PictureSet order
+  std::string pictures = kPictureSets[size_t(bench->pictures)];
   b.Read("pictures", &pictures);
-  if (pictures == "true") bench->pictures = PictureSet::kAll;
-  else if (pictures == "false") bench->pictures = PictureSet::kNone;
-  else if (pictures == "failures") bench->pictures = PictureSet::kFailures;
-  else b.Fail("pictures", pictures, "expected true, false or failures");
+  const auto it = std::find_if(kPictureSets.begin(), kPictureSets.end(), [&](const char* n) { return pictures == n; });
+  if (it == kPictureSets.end()) b.Fail("pictures", pictures, "expected true, false or failures");
+  bench->pictures = PictureSet(it - kPictureSets.begin());
   b.Finish();
 }
 

@@ -37,7 +37,7 @@ struct BenchRow {
 };
 
 // Which trials of a bench get a final picture (bench.pictures: true, false or failures).
-enum class PictureSet { kNone, kAll, kFailures };
+enum class PictureSet { kNone, kAll, kFailures };  // the order of config.cpp's names
 
 struct BenchOptions {
   std::string name = "search";
