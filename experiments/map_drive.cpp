@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "experiments/agent_loop.h"
 #include "experiments/corridor_cuts.h"
+#include "experiments/trial.h"
 #include "sim/paths.h"
 
 namespace toponav::experiments {
@@ -137,6 +138,7 @@ MapDriveResult RunMapDrive(const core::World& world, const Config& config, const
   r.view = loop.final_view;
   r.log_posterior = loop.mapper->LogPosterior();
   r.known_space_iou = KnownSpaceIoU(world, r.view);
+  if (!world.has_boundary()) r.building_iou = BuildingPlacementIoU(world, r.view);
   ScoreVertices(world, &r);
   ScoreWalls(world, config.motion.agent_radius, &r);
   return r;

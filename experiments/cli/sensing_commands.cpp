@@ -224,6 +224,29 @@ int RunRecordedMap(const MapArgs& a) {
   return 0;
 }
 
+// What `map` writes to map.json for one drive.
+nlohmann::json MapDriveJson(uint64_t seed, const experiments::MapDriveResult& r, double ms) {
+  nlohmann::json j;
+  j["seed"] = seed;
+  j["steps"] = r.steps;
+  j["known_space_iou"] = r.known_space_iou;
+  if (r.building_iou >= 0) j["building_iou"] = r.building_iou;
+  j["map_vertices"] = r.map_vertices;
+  j["false_vertices"] = r.false_vertices;
+  j["mean_vertex_error"] = r.mean_vertex_error;
+  j["rejected_vertices"] = r.view.rejected.size();
+  j["map_walls"] = r.map_walls;
+  j["false_walls"] = r.false_walls;
+  j["walls_across_free_space"] = r.walls_across_free_space;
+  j["walls_across_corridor"] = r.walls_across_corridor;
+  j["frontiers"] = r.view.frontiers.size();
+  j["log_posterior"] = r.log_posterior;
+  j["mean_update_ms"] = r.mean_update_ms;
+  j["mean_mcmc_ms"] = r.mean_mcmc_ms;
+  j["wall_time_ms"] = ms;
+  return j;
+}
+
 int RunMap(MapArgs a) {
   if (!a.images.empty()) return RunRecordedMap(a);
   const experiments::Config cfg = LoadOrDefault(a.config);
@@ -232,6 +255,8 @@ int RunMap(MapArgs a) {
   const std::vector<uint64_t> seeds =
       a.seeds.empty() ? std::vector<uint64_t>{experiments::ParseSeed(a.seed)} : experiments::ParseSeeds(a.seeds);
   double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0, across_sum = 0, cut_sum = 0;
+  double building_sum = 0;  // over the open worlds
+  int open_worlds = 0;
   for (uint64_t seed : seeds) {
     WorldSource src = a;
     src.seed = std::to_string(seed);
@@ -243,29 +268,14 @@ int RunMap(MapArgs a) {
     const double ms = MsSince(t0);
     const std::string stem = seeds.size() == 1 ? "map" : fmt::format("map_s{}", seed);
     experiments::DrawMapPicture(w, r.view, {r.agent_path}, cfg.picture, (fs::path(a.out) / (stem + ".png")).string());
-    nlohmann::json j;
-    j["seed"] = seed;
-    j["steps"] = r.steps;
-    j["known_space_iou"] = r.known_space_iou;
-    j["map_vertices"] = r.map_vertices;
-    j["false_vertices"] = r.false_vertices;
-    j["mean_vertex_error"] = r.mean_vertex_error;
-    j["rejected_vertices"] = r.view.rejected.size();
-    j["map_walls"] = r.map_walls;
-    j["false_walls"] = r.false_walls;
-    j["walls_across_free_space"] = r.walls_across_free_space;
-    j["walls_across_corridor"] = r.walls_across_corridor;
-    j["frontiers"] = r.view.frontiers.size();
-    j["log_posterior"] = r.log_posterior;
-    j["mean_update_ms"] = r.mean_update_ms;
-    j["mean_mcmc_ms"] = r.mean_mcmc_ms;
-    j["wall_time_ms"] = ms;
-    WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), j.dump(1) + "\n");
-    fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
+    WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), MapDriveJson(seed, r, ms).dump(1) + "\n");
+    fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}{}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
                "walls {:>3} ({} false, {} into free space, {} across a corridor)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
-               seed, r.steps, r.known_space_iou, r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
+               seed, r.steps, r.known_space_iou, r.building_iou >= 0 ? fmt::format(" (buildings {:.4f})", r.building_iou) : "",
+               r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
                r.map_walls, r.false_walls, r.walls_across_free_space, r.walls_across_corridor, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
     iou_sum += r.known_space_iou;
+    if (r.building_iou >= 0) building_sum += r.building_iou, ++open_worlds;
     false_sum += r.false_vertices;
     error_sum += r.mean_vertex_error * (r.map_vertices - r.false_vertices);  // pooled over matched vertices
     vert_sum += r.map_vertices;
@@ -275,9 +285,11 @@ int RunMap(MapArgs a) {
     wall_sum += r.map_walls;
   }
   if (seeds.size() > 1)
-    fmt::print("{} seeds: mean IoU {:.4f}, false vertices {:.1f} % ({} of {}), false walls {:.1f} % ({} into free space, "
+    fmt::print("{} seeds: mean IoU {:.4f}{}, false vertices {:.1f} % ({} of {}), false walls {:.1f} % ({} into free space, "
                "{} across a corridor), vertex error {:.2f}\n",
-               seeds.size(), iou_sum / double(seeds.size()), 100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
+               seeds.size(), iou_sum / double(seeds.size()),
+               open_worlds > 0 ? fmt::format(" (buildings {:.4f})", building_sum / open_worlds) : "",
+               100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
                vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), across_sum, cut_sum,
                error_sum / std::max(1.0, vert_sum - false_sum));
   return 0;

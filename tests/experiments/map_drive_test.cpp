@@ -51,6 +51,21 @@ TEST(MapDrive, KnownSpaceNeverCoversSpaceNoObservationSaw) {
   EXPECT_LT(unseen_but_known.Area(), 0.002 * known);
 }
 
+// Open worlds score where buildings are as the search does (holes of known space against the buildings), so a
+// mapping change can be judged on fixed drives; worlds with a boundary have no such score.
+TEST(MapDrive, OfficeParkTourScoresBuildingPlacement) {
+  const Config cfg;
+  sim::OfficeParkOptions small;
+  small.num_buildings = 2;
+  small.num_trees = 4;
+  const auto park = RunMapDrive(sim::GenerateOfficePark(small, 31), cfg, Short(31, 3000));
+  EXPECT_GT(park.building_iou, 0.9) << "a tour of the whole park walks round both buildings";
+  EXPECT_LE(park.building_iou, 1.0);
+  const auto short_park = RunMapDrive(sim::GenerateOfficePark(small, 31), cfg, Short(31, 5));
+  EXPECT_LT(short_park.building_iou, park.building_iou) << "after five steps no building is enclosed yet";
+  EXPECT_EQ(RunMapDrive(sim::GenerateLabyrinth({}, 21), cfg, Short(5, 5)).building_iou, -1.0);
+}
+
 // Statistical quality on tuning seeds (< 10000), on small two-room labyrinths to keep the suite fast (the
 // full 20-seed figure is `toponav map --seeds ...`): the posterior keeps the map clean and known space complete.
 TEST(MapDrive, LabyrinthTourBuildsAnAccurateMapAndTheBaselineDoesNot) {
