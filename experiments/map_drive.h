@@ -3,6 +3,7 @@
 // observing with the config's sensor each step, MCMC on a cadence.  Used by `toponav map` and the mapping
 // quality tests.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,7 @@ struct MapDriveResult {
   std::vector<core::Vec2> agent_path;
   int steps = 0;
   double known_space_iou = 0.0;   // known space vs true free space
-  double building_iou = -1.0;     // open worlds: the search's building-placement IoU (BuildingPlacementIoU); -1
-                                  // in worlds with a boundary
+  std::optional<double> building_iou;  // open worlds: the search's building-placement IoU (BuildingPlacementIoU)
   int map_vertices = 0;
   int false_vertices = 0;         // map vertices farther than 'vertex_match_radius' from any true vertex
   double mean_vertex_error = 0.0; // mean distance of the other map vertices to the nearest true vertex

@@ -230,7 +230,7 @@ nlohmann::json MapDriveJson(uint64_t seed, const experiments::MapDriveResult& r,
   j["seed"] = seed;
   j["steps"] = r.steps;
   j["known_space_iou"] = r.known_space_iou;
-  if (r.building_iou >= 0) j["building_iou"] = r.building_iou;
+  if (r.building_iou) j["building_iou"] = *r.building_iou;
   j["map_vertices"] = r.map_vertices;
   j["false_vertices"] = r.false_vertices;
   j["mean_vertex_error"] = r.mean_vertex_error;
@@ -271,11 +271,11 @@ int RunMap(MapArgs a) {
     WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), MapDriveJson(seed, r, ms).dump(1) + "\n");
     fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}{}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
                "walls {:>3} ({} false, {} into free space, {} across a corridor)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
-               seed, r.steps, r.known_space_iou, r.building_iou >= 0 ? fmt::format(" (buildings {:.4f})", r.building_iou) : "",
+               seed, r.steps, r.known_space_iou, r.building_iou ? fmt::format(" (buildings {:.4f})", *r.building_iou) : "",
                r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
                r.map_walls, r.false_walls, r.walls_across_free_space, r.walls_across_corridor, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
     iou_sum += r.known_space_iou;
-    if (r.building_iou >= 0) building_sum += r.building_iou, ++open_worlds;
+    if (r.building_iou) building_sum += *r.building_iou, ++open_worlds;
     false_sum += r.false_vertices;
     error_sum += r.mean_vertex_error * (r.map_vertices - r.false_vertices);  // pooled over matched vertices
     vert_sum += r.map_vertices;

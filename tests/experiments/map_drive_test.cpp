@@ -59,11 +59,13 @@ TEST(MapDrive, OfficeParkTourScoresBuildingPlacement) {
   small.num_buildings = 2;
   small.num_trees = 4;
   const auto park = RunMapDrive(sim::GenerateOfficePark(small, 31), cfg, Short(31, 3000));
-  EXPECT_GT(park.building_iou, 0.9) << "a tour of the whole park walks round both buildings";
-  EXPECT_LE(park.building_iou, 1.0);
+  ASSERT_TRUE(park.building_iou);
+  EXPECT_GT(*park.building_iou, 0.9) << "a tour of the whole park walks round both buildings";
+  EXPECT_LE(*park.building_iou, 1.0);
   const auto short_park = RunMapDrive(sim::GenerateOfficePark(small, 31), cfg, Short(31, 5));
-  EXPECT_LT(short_park.building_iou, park.building_iou) << "after five steps no building is enclosed yet";
-  EXPECT_EQ(RunMapDrive(sim::GenerateLabyrinth({}, 21), cfg, Short(5, 5)).building_iou, -1.0);
+  ASSERT_TRUE(short_park.building_iou);
+  EXPECT_LT(*short_park.building_iou, *park.building_iou) << "after five steps no building is enclosed yet";
+  EXPECT_FALSE(RunMapDrive(sim::GenerateLabyrinth({}, 21), cfg, Short(5, 5)).building_iou);
 }
 
 // Statistical quality on tuning seeds (< 10000), on small two-room labyrinths to keep the suite fast (the
