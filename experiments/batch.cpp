@@ -75,6 +75,7 @@ json SearchJson(const TrialId& id, const TrialResult& r) {
   j["distance_per_agent"] = r.distance;
   j["nudges"] = r.nudges;
   j["give_ups"] = r.give_ups;
+  j["inspections"] = r.inspections;
   j["blocks"] = r.blocks.size();
   j["end_reason"] = r.end_reason;
   j["wall_time_s"] = r.wall_time_s;

@@ -35,6 +35,8 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
       {"tour", &O::tour},
       {"block_when_stuck", &O::block_when_stuck},
       {"close_buildings", &O::close_buildings},
+      {"inspect_bend", &O::inspect_bend, 0.0, 1.5},
+      {"inspect_standoff", &O::inspect_standoff, 0.1, 1000.0},
   };
   return fields;
 }

@@ -76,6 +76,10 @@ struct SearchOptions {
                                   // wall 4 steps long across its way is added for the planners
   bool close_buildings = false;   // open worlds: a straight frontier between two map vertices that walls
                                   // already join the long way round is a building's last side, no target
+  double inspect_bend = 0.0;      // > 0: before the search ends, agents look from inspect_standoff at each map
+                                  // vertex whose two walls run on within this bend (radians) of straight
+                                  // (planning::StraightVertexInspector: a jamb of a walled-over opening); 0: off
+  double inspect_standoff = 10.0; // world units from such a vertex, square to its walls, on the known side
   static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };

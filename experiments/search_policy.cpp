@@ -28,6 +28,8 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
     const double step = MotionFor(config, world).step_length;
     blocks_.emplace(num_agents, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
   }
+  if (config.search.inspect_bend > 0)
+    inspector_.emplace(config.search.inspect_bend, config.search.inspect_standoff, config.search.give_up_distance);
 }
 
 std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapView& view) {
@@ -86,6 +88,11 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   const planning::VisibilityGraph graph(planned, planning_, false);
   planning::PlanningProblem problem{&planned, &graph, &targets_, {}, std::nullopt};
   for (const auto& p : state.poses) problem.agents.push_back(p.position());
+  if (targets_.empty() && inspector_) {
+    for (const auto& t : inspector_->Targets(view, graph, problem.agents))
+      if (!given_up_.Contains(t.frontier_id)) targets_.push_back(t);
+    original_ = targets_;
+  }
   choices_ = planner_->Plan(problem);
   commitment_.Apply(graph, targets_, problem.agents, &choices_);
   if (on_plan) on_plan(targets_, choices_);

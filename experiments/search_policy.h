@@ -7,7 +7,9 @@
 // stuck agents are nudged.  The search ends when no frontier is left ("explored") or none has been reachable
 // for search.unreachable_steps steps ("unreachable").  With search.block_when_stuck, where an agent's steps make
 // no headway along its path the planners get a short wall across its way (planning::MotionBlocks); with
-// search.close_buildings, in open worlds a building's last side (planning::ClosesWallChain) is no target.
+// search.close_buildings, in open worlds a building's last side (planning::ClosesWallChain) is no target; with
+// search.inspect_bend, once no frontier is left agents look from close by at the map vertices that walls run
+// straight through (planning::StraightVertexInspector) before the search ends.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -19,6 +21,7 @@
 #include "planning/motion_blocks.h"
 #include "planning/planner.h"
 #include "planning/search_policy.h"
+#include "planning/straight_vertices.h"
 
 namespace toponav::experiments {
 
@@ -37,6 +40,7 @@ class SearchPolicy : public AgentPolicy {
   const std::string& end_reason() const { return end_reason_; }  // "explored", "unreachable", "step_cap"
   int nudges() const { return nudges_; }
   int give_ups() const { return given_up_.given_up(); }
+  int inspections() const { return inspector_ ? inspector_->inspected() : 0; }
   // Where agents made no headway (search.block_when_stuck): the walls given to the planners.
   std::vector<core::Segment2> blocks() const { return blocks_ ? blocks_->blocks() : std::vector<core::Segment2>{}; }
 
@@ -54,6 +58,7 @@ class SearchPolicy : public AgentPolicy {
   planning::FrontierCommitment commitment_;
   planning::StuckMonitor stuck_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
+  std::optional<planning::StraightVertexInspector> inspector_;  // search.inspect_bend > 0 only
   // This step's targets (pushed through where agents dwelt, and as they were before) and choices.
   std::vector<planning::FrontierTarget> targets_, original_;
   std::vector<planning::FrontierChoice> choices_;

@@ -68,6 +68,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   r.end_reason = policy.end_reason();
   r.nudges = policy.nudges();
   r.give_ups = policy.give_ups();
+  r.inspections = policy.inspections();
   r.blocks = policy.blocks();
   r.iou = open_world ? BuildingPlacementIoU(world, loop.final_view) : KnownSpaceIoU(world, loop.final_view);
   r.success = r.explored && r.iou > config.search.success_iou;

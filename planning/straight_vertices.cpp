@@ -1,0 +1,95 @@
+#include "planning/straight_vertices.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/error.h"
+
+namespace toponav::planning {
+
+using core::Vec2;
+
+namespace {
+
+// The far ends of the walls at each vertex id.
+std::map<int, std::vector<Vec2>> WallEnds(const mapping::MapView& view) {
+  std::map<int, std::vector<Vec2>> ends;
+  for (const auto& w : view.walls) {
+    ends[w.a].push_back(w.pb);
+    ends[w.b].push_back(w.pa);
+  }
+  return ends;
+}
+
+bool Known(const mapping::MapView& view, const Vec2& p) {
+  if (view.known_set) return view.known_set->Contains(p);
+  for (const auto& poly : view.known_space)
+    if (core::Contains(poly, p)) return true;
+  return false;
+}
+
+}  // namespace
+
+std::vector<StraightVertex> StraightVertices(const mapping::MapView& view, double max_bend, double standoff) {
+  const std::map<int, std::vector<Vec2>> ends = WallEnds(view);
+  std::vector<StraightVertex> out;
+  for (const auto& v : view.vertices) {
+    const auto it = ends.find(v.id);
+    if (it == ends.end() || it->second.size() != 2) continue;
+    const Vec2 d0 = it->second[0] - v.position, d1 = it->second[1] - v.position;
+    const double angle = std::abs(std::atan2(core::Cross(d0, d1), core::Dot(d0, d1)));  // pi: straight on
+    if (core::kPi - angle > max_bend) continue;
+    const Vec2 along = it->second[1] - it->second[0];
+    const double length = std::hypot(along.x, along.y);
+    if (length <= 0) continue;
+    const Vec2 normal{-along.y / length, along.x / length};
+    StraightVertex s{v.id, v.position, {}};
+    for (const double side : {1.0, -1.0}) {
+      const Vec2 p = v.position + normal * (side * standoff);
+      if (Known(view, p)) s.lookouts.push_back(p);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+StraightVertexInspector::StraightVertexInspector(double max_bend, double standoff, double reach)
+    : max_bend_(max_bend), standoff_(standoff), reach_(reach) {
+  TOPONAV_CHECK(max_bend > 0 && standoff > 0 && reach > 0,
+                "straight-vertex inspection: bend " << max_bend << ", standoff " << standoff << ", reach " << reach);
+}
+
+bool StraightVertexInspector::Inspected(const Vec2& p) const {
+  for (const auto& q : inspected_)
+    if (core::Distance(p, q) <= reach_) return true;
+  return false;
+}
+
+std::vector<FrontierTarget> StraightVertexInspector::Targets(const mapping::MapView& view, const VisibilityGraph& graph,
+                                                             const std::vector<Vec2>& agents) {
+  std::vector<FrontierTarget> targets;
+  for (const StraightVertex& s : StraightVertices(view, max_bend_, standoff_)) {
+    if (Inspected(s.position)) continue;
+    double best = std::numeric_limits<double>::infinity();
+    FrontierTarget t;
+    bool near = false;
+    for (const Vec2& agent : agents) {
+      const std::vector<Path> paths = graph.PlanToMany(agent, s.lookouts);
+      for (size_t k = 0; k < paths.size(); ++k) {
+        near = near || core::Distance(agent, s.lookouts[k]) <= reach_;
+        if (paths[k] && paths[k].cost < best) best = paths[k].cost, t.point = s.lookouts[k];
+      }
+    }
+    if (near || !std::isfinite(best)) {
+      inspected_.push_back(s.position);
+      continue;
+    }
+    t.frontier_id = kIdBase - s.id;
+    t.outward = (s.position - t.point) * (1.0 / standoff_);
+    targets.push_back(t);
+  }
+  return targets;
+}
+
+}  // namespace toponav::planning
