@@ -16,15 +16,17 @@ namespace {
 
 int ArgMax(const core::LabelProbs& p) { return int(std::max_element(p.begin(), p.end()) - p.begin()); }
 
-size_t RangeBand(double range) {
-  const auto& edges = SensorEval::kRangeEdges;
-  return size_t(std::upper_bound(edges.begin(), edges.end(), range) - edges.begin());
+template <size_t N>
+size_t Band(const std::array<double, N>& edges, double value) {
+  return size_t(std::upper_bound(edges.begin(), edges.end(), value) - edges.begin());
 }
+size_t RangeBand(double range) { return Band(SensorEval::kRangeEdges, range); }
 
 // Matches the detections of one observation with the true vertices (within one range and one bearing bin,
 // nearest cell distance first, one-to-one) and adds the counts to 'e'.
-void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& truth, const core::RangeBearingGrid& g,
-           SensorEval* e) {
+// 'sight[t]': the band of truth[t]'s sight-line angle.
+void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& truth, const std::vector<size_t>& sight,
+           const core::RangeBearingGrid& g, SensorEval* e) {
   struct Pair {
     int cells;
     size_t d, t;
@@ -46,6 +48,7 @@ void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& tr
     const auto& t = truth[p.t];
     ++e->matches;
     ++e->matched_by_range[RangeBand(t.range)];
+    ++e->matched_by_sight[sight[p.t]];
     const int detected = ArgMax(d.labels), real = int(t.label);
     e->label_correct += detected == real;
     ++e->confusion[size_t(real)][size_t(detected)];
@@ -57,6 +60,7 @@ void Score(const core::Observation& z, const std::vector<sim::VisibleVertex>& tr
     e->range_sq_sum += dr * dr;
     e->bearing_sq_sum += db * db;
   }
+  for (size_t t = 0; t < truth.size(); ++t) ++e->true_by_sight[sight[t]];
   for (const auto& t : truth) {
     ++e->true_by_range[RangeBand(t.range)];
     ++e->true_by_label[size_t(t.label)];
@@ -74,6 +78,19 @@ double SignedBearingError(core::VertexLabel true_label, double detected_bearing,
   return toward_gap * core::WrapAngle(detected_bearing - true_bearing);
 }
 
+double SightAngle(const core::World& world, const core::VertexRef& ref, const core::Vec2& eye) {
+  const core::Ring& ring = *core::MapRings(world).at(size_t(ref.ring));
+  const size_t n = ring.size(), i = size_t(ref.index);
+  const core::Vec2 v = ring[i], sight = v - eye;
+  double angle = core::kPi / 2;
+  for (const core::Vec2& w : {ring[(i + n - 1) % n], ring[(i + 1) % n]}) {
+    const core::Vec2 wall = w - v;
+    const double a = std::abs(std::atan2(core::Cross(sight, wall), core::Dot(sight, wall)));  // [0, pi]
+    angle = std::min(angle, std::min(a, core::kPi - a));
+  }
+  return angle;
+}
+
 SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const core::RangeBearingGrid grid;
@@ -84,7 +101,10 @@ SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& o) {
     auto sensor = CreateSensor(config.sensor, {&w, config.render, std::nullopt, core::DeriveSeed(seed, 1)});
     for (int i = 0; i < o.samples_per_world; ++i) {
       const core::Pose2 pose = sim::SamplePose(w, {sim::Split::kVal, o.kind, seed, i}, config.datagen);
-      Score(sensor->Observe(pose, 0), caster.VisibleVertices(pose, grid.max_range), grid, &e);
+      const std::vector<sim::VisibleVertex> truth = caster.VisibleVertices(pose, grid.max_range);
+      std::vector<size_t> sight;
+      for (const auto& t : truth) sight.push_back(Band(SensorEval::kSightEdges, SightAngle(w, t.ref, pose.position())));
+      Score(sensor->Observe(pose, 0), truth, sight, grid, &e);
     }
   }
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

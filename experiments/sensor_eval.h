@@ -28,6 +28,10 @@ struct SensorEval {
   // Recall by the true vertex's range (bands split at kRangeEdges) and by its true label.
   static constexpr std::array<double, 3> kRangeEdges{10.0, 25.0, 50.0};
   std::array<int, 4> true_by_range{}, matched_by_range{}, true_by_label{};
+  // Recall by the sight-line angle (SightAngle; bands split at kSightEdges, radians: 5, 15, 30 degrees): a
+  // vertex at the end of a wall seen end-on shows the camera no face.
+  static constexpr std::array<double, 3> kSightEdges{0.0873, 0.2618, 0.5236};
+  std::array<int, 4> true_by_sight{}, matched_by_sight{};
   // Signed errors (detected - true) of matches by true label; bearing toward the gap side for the gap labels
   // (positive: the vertex is seen out in the open, off the wall's end), counter-clockwise for the others.
   std::array<double, 4> range_bias_sum{}, bearing_bias_sum{};
@@ -38,6 +42,9 @@ struct SensorEval {
   double label_accuracy() const { return matches > 0 ? double(label_correct) / matches : 0.0; }
   double mean_range_error() const { return matches > 0 ? range_error_sum / matches : 0.0; }
   double mean_bearing_error() const { return matches > 0 ? bearing_error_sum / matches : 0.0; }
+  double recall_at_sight(size_t b) const {
+    return true_by_sight[b] > 0 ? double(matched_by_sight[b]) / true_by_sight[b] : 0.0;
+  }
   double recall_in_band(size_t b) const {
     return true_by_range[b] > 0 ? double(matched_by_range[b]) / true_by_range[b] : 0.0;
   }
@@ -58,6 +65,9 @@ struct SensorEval {
 };
 
 SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& options);
+// The smaller angle (radians, [0, pi/2]) between the line of sight from 'eye' to vertex 'ref' of 'world' and
+// the vertex's two walls: 0 where one of them is seen end-on.
+double SightAngle(const core::World& world, const core::VertexRef& ref, const core::Vec2& eye);
 // A detection's signed bearing error (radians, detected - true, wrapped) as the bias sums count it: toward
 // the gap side for the gap labels (positive: out in the open, off the wall's end), else counter-clockwise.
 double SignedBearingError(core::VertexLabel true_label, double detected_bearing, double true_bearing);

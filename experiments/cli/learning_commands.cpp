@@ -216,6 +216,12 @@ int RunEvalSensor(const EvalSensorArgs& a) {
              "{:.3f} farther ({})\n",
              e.recall_in_band(0), edges[0], e.true_by_range[0], e.recall_in_band(1), edges[1], e.true_by_range[1],
              e.recall_in_band(2), edges[2], e.true_by_range[2], e.recall_in_band(3), e.true_by_range[3]);
+  const auto& sight = experiments::SensorEval::kSightEdges;
+  fmt::print("  recall by sight-line angle to the vertex's walls: {:.3f} under {:.0f} deg ({} vertices), {:.3f} to {:.0f} "
+             "({}), {:.3f} to {:.0f} ({}), {:.3f} beyond ({})\n",
+             e.recall_at_sight(0), sight[0] * 180 / core::kPi, e.true_by_sight[0], e.recall_at_sight(1),
+             sight[1] * 180 / core::kPi, e.true_by_sight[1], e.recall_at_sight(2), sight[2] * 180 / core::kPi,
+             e.true_by_sight[2], e.recall_at_sight(3), e.true_by_sight[3]);
   fmt::print("  recall by true label: right gap {:.3f} ({}), corner {:.3f} ({}), left gap {:.3f} ({}), "
              "point {:.3f} ({})\n",
              e.recall_of_label(0), e.true_by_label[0], e.recall_of_label(1), e.true_by_label[1], e.recall_of_label(2),

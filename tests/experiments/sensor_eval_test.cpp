@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include "core/world.h"
+#include "tests/testing/worlds.h"
+
 namespace toponav::experiments {
 namespace {
 
@@ -43,6 +46,21 @@ TEST(SensorEval, SignedBearingErrorPointsTowardTheGap) {
   EXPECT_NEAR(SignedBearingError(core::VertexLabel::kLeftGap, -3.14, 3.14), 2 * core::kPi - 6.28, 1e-12) << "wraps";
 }
 
+// The square obstacle (1, 1)-(2, 2) of testing::SquareWorld: its corner (1, 1) seen along its south wall's
+// line is seen end-on (0); from straight down the diagonal both walls are at 45 degrees.
+TEST(SensorEval, TheSightAngleIsZeroAlongAWallAndFortyFiveDegreesDownTheDiagonal) {
+  const core::World w = testing::SquareWorld();
+  const auto rings = core::MapRings(w);
+  core::VertexRef corner{-1, -1};
+  for (size_t r = 0; r < rings.size(); ++r)
+    for (size_t i = 0; i < rings[r]->size(); ++i)
+      if (core::Distance((*rings[r])[i], {1, 1}) < 1e-9) corner = {int(r), int(i)};
+  ASSERT_GE(corner.ring, 0);
+  EXPECT_NEAR(SightAngle(w, corner, {-5, 1}), 0.0, 1e-9);
+  EXPECT_NEAR(SightAngle(w, corner, {0, 0}), core::kPi / 4, 1e-9);
+  EXPECT_NEAR(SightAngle(w, corner, {0, 1 - std::tan(0.2)}), 0.2, 1e-9);
+}
+
 TEST(SensorEval, TheNoisySensorsConfiguredRatesAreMeasuredBack) {
   Config c;
   c.sensor.noisy.miss_probability = 0.3;
@@ -61,6 +79,9 @@ TEST(SensorEval, TheNoisySensorsConfiguredRatesAreMeasuredBack) {
     }
   }
   EXPECT_EQ(banded, e.true_vertices);
+  int sighted = 0;
+  for (int n : e.true_by_sight) sighted += n;
+  EXPECT_EQ(sighted, e.true_vertices);
   for (size_t l = 0; l < e.true_by_label.size(); ++l)
     if (e.true_by_label[l] >= 50) {
       EXPECT_NEAR(e.recall_of_label(l), 0.7, 0.12) << "label " << l;
