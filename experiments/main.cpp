@@ -221,7 +221,7 @@ int RunTrialCommand(const TrialArgs& a) {
   double total = 0;
   for (double d : r.distance) total += d;
   fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, "
-             "frontiers given up {}, motion blocks {}, vertices inspected {}, {:.1f} s -> {}\n",
+             "frontiers given up {}, motion blocks {}, vertex inspections {}, {:.1f} s -> {}\n",
              seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
              r.give_ups, r.blocks.size(), r.inspections, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
   if (!w.has_boundary()) PrintBuildingPlacement(w, view);

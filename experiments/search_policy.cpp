@@ -29,7 +29,8 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
     blocks_.emplace(num_agents, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
   }
   if (config.search.inspect_bend > 0)
-    inspector_.emplace(config.search.inspect_bend, config.search.inspect_standoff, config.search.give_up_distance);
+    inspector_.emplace(config.search.inspect_bend, config.search.inspect_standoff, config.search.give_up_distance,
+                       config.search.give_up_steps);
 }
 
 std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapView& view) {
@@ -71,8 +72,13 @@ bool SearchPolicy::Ended(const std::vector<planning::FrontierTarget>& targets, c
 void SearchPolicy::CountDwelling(const LoopState& state, const std::vector<Vec2>& agents) {
   std::vector<char> standing;
   for (const auto& trail : *state.trails) standing.push_back(planning::FrontierDwell::Standing(trail, state.step_length));
-  for (size_t i : dwell_.CountStanding(targets_, original_, agents, standing))
-    given_up_.GiveUp(targets_[i].frontier_id, state.view->frontiers, &original_[i].point);
+  // Inspection targets are the inspector's to retire.
+  std::vector<planning::FrontierTarget> frontiers, before;
+  for (size_t i = 0; i < targets_.size(); ++i)
+    if (!planning::StraightVertexInspector::IsInspection(targets_[i].frontier_id))
+      frontiers.push_back(targets_[i]), before.push_back(original_[i]);
+  for (size_t i : dwell_.CountStanding(frontiers, before, agents, standing))
+    given_up_.GiveUp(frontiers[i].frontier_id, state.view->frontiers, &before[i].point);
 }
 
 bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) {
@@ -89,8 +95,7 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   planning::PlanningProblem problem{&planned, &graph, &targets_, {}, std::nullopt};
   for (const auto& p : state.poses) problem.agents.push_back(p.position());
   if (targets_.empty() && inspector_) {
-    for (const auto& t : inspector_->Targets(view, graph, problem.agents))
-      if (!given_up_.Contains(t.frontier_id)) targets_.push_back(t);
+    targets_ = inspector_->Targets(view, graph, problem.agents);
     original_ = targets_;
   }
   choices_ = planner_->Plan(problem);
@@ -116,7 +121,10 @@ sim::StepResult SearchPolicy::AfterStep(const LoopState& state, int agent, const
   if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, c.path.points, trail.back(), step.pose.position());
   // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward giving
   // it up as if it stood next to it; all of it counts as probed.
-  if (stuck && found && dwell_.Count(c.frontier_id)) given_up_.GiveUp(c.frontier_id, state.view->frontiers);
+  if (stuck && found && planning::StraightVertexInspector::IsInspection(c.frontier_id))
+    inspector_->GiveUp(c.frontier_id);
+  else if (stuck && found && dwell_.Count(c.frontier_id))
+    given_up_.GiveUp(c.frontier_id, state.view->frontiers);
   if (!stuck_.Record(agent, stuck)) return step;
   // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
   ++nudges_;

@@ -40,7 +40,7 @@ class SearchPolicy : public AgentPolicy {
   const std::string& end_reason() const { return end_reason_; }  // "explored", "unreachable", "step_cap"
   int nudges() const { return nudges_; }
   int give_ups() const { return given_up_.given_up(); }
-  int inspections() const { return inspector_ ? inspector_->inspected() : 0; }
+  int inspections() const { return inspector_ ? inspector_->targeted() : 0; }
   // Where agents made no headway (search.block_when_stuck): the walls given to the planners.
   std::vector<core::Segment2> blocks() const { return blocks_ ? blocks_->blocks() : std::vector<core::Segment2>{}; }
 

@@ -38,8 +38,8 @@ struct TrialResult {
   std::vector<double> distance;   // travelled per agent
   int nudges = 0;                 // stuck-agent perturbations
   int give_ups = 0;               // frontiers given up (agents stood next to them, or were stuck on the way)
-  int inspections = 0;            // map vertices walls run straight through, looked at before the end
-                                  // (search.inspect_bend; those no agent could get to count too)
+  int inspections = 0;            // map vertices walls run straight through that agents were sent to look
+                                  // at before the end (search.inspect_bend)
   std::vector<core::Segment2> blocks;  // motion blocks added (search.block_when_stuck)
   std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;

@@ -18,7 +18,7 @@ void FrontierCommitment::Apply(const VisibilityGraph& graph, const std::vector<F
   for (size_t a = 0; a < cs.size(); ++a) {
     auto& c = cs[a];
     const int prev = committed_[a];
-    if (prev < 0 || c.status != PlanStatus::kFound || c.frontier_id == prev) continue;
+    if (prev == -1 || c.status != PlanStatus::kFound || c.frontier_id == prev) continue;
     for (const auto& t : targets) {
       if (t.frontier_id != prev) continue;
       const Path keep = graph.Plan(agents[a], t.point);

@@ -54,10 +54,10 @@ std::vector<StraightVertex> StraightVertices(const mapping::MapView& view, doubl
   return out;
 }
 
-StraightVertexInspector::StraightVertexInspector(double max_bend, double standoff, double reach)
-    : max_bend_(max_bend), standoff_(standoff), reach_(reach) {
-  TOPONAV_CHECK(max_bend > 0 && standoff > 0 && reach > 0,
-                "straight-vertex inspection: bend " << max_bend << ", standoff " << standoff << ", reach " << reach);
+StraightVertexInspector::StraightVertexInspector(double max_bend, double standoff, double reach, int looks)
+    : max_bend_(max_bend), standoff_(standoff), reach_(reach), looks_(looks) {
+  TOPONAV_CHECK(max_bend > 0 && standoff > 0 && reach > 0 && looks >= 1, "straight-vertex inspection: bend "
+                    << max_bend << ", standoff " << standoff << ", reach " << reach << ", looks " << looks);
 }
 
 bool StraightVertexInspector::Inspected(const Vec2& p) const {
@@ -66,27 +66,44 @@ bool StraightVertexInspector::Inspected(const Vec2& p) const {
   return false;
 }
 
+void StraightVertexInspector::GiveUp(int frontier_id) {
+  const auto it = offered_.find(frontier_id);
+  if (it != offered_.end() && !Inspected(it->second)) inspected_.push_back(it->second);
+}
+
 std::vector<FrontierTarget> StraightVertexInspector::Targets(const mapping::MapView& view, const VisibilityGraph& graph,
                                                              const std::vector<Vec2>& agents) {
+  std::vector<StraightVertex> open;
+  std::vector<Vec2> lookouts;
+  for (StraightVertex& s : StraightVertices(view, max_bend_, standoff_))
+    if (!Inspected(s.position)) {
+      lookouts.insert(lookouts.end(), s.lookouts.begin(), s.lookouts.end());
+      open.push_back(std::move(s));
+    }
+  std::vector<std::vector<Path>> paths;  // per agent, to every lookout in order
+  for (const Vec2& agent : agents) paths.push_back(graph.PlanToMany(agent, lookouts));
   std::vector<FrontierTarget> targets;
-  for (const StraightVertex& s : StraightVertices(view, max_bend_, standoff_)) {
-    if (Inspected(s.position)) continue;
+  offered_.clear();
+  size_t first = 0;  // the index of this vertex's first lookout
+  for (const StraightVertex& s : open) {
     double best = std::numeric_limits<double>::infinity();
     FrontierTarget t;
     bool near = false;
-    for (const Vec2& agent : agents) {
-      const std::vector<Path> paths = graph.PlanToMany(agent, s.lookouts);
-      for (size_t k = 0; k < paths.size(); ++k) {
-        near = near || core::Distance(agent, s.lookouts[k]) <= reach_;
-        if (paths[k] && paths[k].cost < best) best = paths[k].cost, t.point = s.lookouts[k];
+    for (size_t a = 0; a < agents.size(); ++a)
+      for (size_t k = 0; k < s.lookouts.size(); ++k) {
+        const Path& path = paths[a][first + k];
+        near = near || core::Distance(agents[a], s.lookouts[k]) <= reach_;
+        if (path && path.cost < best) best = path.cost, t.point = s.lookouts[k];
       }
-    }
-    if (near || !std::isfinite(best)) {
+    first += s.lookouts.size();
+    if ((near && ++looked_[s.id] >= looks_) || !std::isfinite(best)) {
       inspected_.push_back(s.position);
       continue;
     }
     t.frontier_id = kIdBase - s.id;
     t.outward = (s.position - t.point) * (1.0 / standoff_);
+    offered_[t.frontier_id] = s.position;
+    targeted_.insert(s.id);
     targets.push_back(t);
   }
   return targets;

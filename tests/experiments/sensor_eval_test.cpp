@@ -57,6 +57,7 @@ TEST(SensorEval, TheSightAngleIsZeroAlongAWallAndFortyFiveDegreesDownTheDiagonal
       if (core::Distance((*rings[r])[i], {1, 1}) < 1e-9) corner = {int(r), int(i)};
   ASSERT_GE(corner.ring, 0);
   EXPECT_NEAR(SightAngle(w, corner, {-5, 1}), 0.0, 1e-9);
+  EXPECT_NEAR(SightAngle(w, corner, {5, 1}), 0.0, 1e-9) << "along the wall, from its far side";
   EXPECT_NEAR(SightAngle(w, corner, {0, 0}), core::kPi / 4, 1e-9);
   EXPECT_NEAR(SightAngle(w, corner, {0, 1 - std::tan(0.2)}), 0.2, 1e-9);
 }
@@ -79,9 +80,6 @@ TEST(SensorEval, TheNoisySensorsConfiguredRatesAreMeasuredBack) {
     }
   }
   EXPECT_EQ(banded, e.true_vertices);
-  int sighted = 0;
-  for (int n : e.true_by_sight) sighted += n;
-  EXPECT_EQ(sighted, e.true_vertices);
   for (size_t l = 0; l < e.true_by_label.size(); ++l)
     if (e.true_by_label[l] >= 50) {
       EXPECT_NEAR(e.recall_of_label(l), 0.7, 0.12) << "label " << l;

@@ -47,6 +47,22 @@ TEST(FrontierCommitment, AnAgentKeepsItsFrontierUnlessANewOneIsMuchCheaper) {
   EXPECT_EQ(choices[0].frontier_id, 1);
 }
 
+// Targets other than frontiers carry negative ids (the straight-vertex inspector's, -1000 and below); only
+// -1 means "none".
+TEST(FrontierCommitment, AnAgentKeepsATargetWithANegativeId) {
+  const mapping::MapView view = OpenSquare();
+  const VisibilityGraph g(view, {}, false);
+  FrontierCommitment commitment(1, 1.5, 10.0);
+  const Vec2 agent{50, 50};
+  const std::vector<FrontierTarget> targets{Target(-1003, {80, 50}), Target(2, {50, 75})};
+  std::vector<FrontierChoice> choices{Choice(g, -1003, agent, {80, 50})};
+  commitment.Apply(g, targets, {agent}, &choices);
+  EXPECT_EQ(commitment.committed(0), -1003);
+  choices = {Choice(g, 2, agent, {50, 75})};
+  commitment.Apply(g, targets, {agent}, &choices);
+  EXPECT_EQ(choices[0].frontier_id, -1003);
+}
+
 TEST(FrontierCommitment, ATeamMateHoldingTheFrontierBreaksTheCommitment) {
   const mapping::MapView view = OpenSquare();
   const VisibilityGraph g(view, {}, false);
