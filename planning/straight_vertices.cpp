@@ -22,13 +22,6 @@ std::map<int, std::vector<Vec2>> WallEnds(const mapping::MapView& view) {
   return ends;
 }
 
-bool Known(const mapping::MapView& view, const Vec2& p) {
-  if (view.known_set) return view.known_set->Contains(p);
-  for (const auto& poly : view.known_space)
-    if (core::Contains(poly, p)) return true;
-  return false;
-}
-
 }  // namespace
 
 std::vector<StraightVertex> StraightVertices(const mapping::MapView& view, double max_bend, double standoff) {
@@ -47,7 +40,7 @@ std::vector<StraightVertex> StraightVertices(const mapping::MapView& view, doubl
     StraightVertex s{v.id, v.position, {}};
     for (const double side : {1.0, -1.0}) {
       const Vec2 p = v.position + normal * (side * standoff);
-      if (Known(view, p)) s.lookouts.push_back(p);
+      if (InKnown(view, p)) s.lookouts.push_back(p);
     }
     out.push_back(std::move(s));
   }
