@@ -37,6 +37,7 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
       {"close_buildings", &O::close_buildings},
       {"inspect_bend", &O::inspect_bend, 0.0, 1.5},
       {"inspect_standoff", &O::inspect_standoff, 0.1, 1000.0},
+      {"inspect_unwalled", &O::inspect_unwalled, 0, 1000000},
   };
   return fields;
 }

@@ -78,8 +78,12 @@ struct SearchOptions {
                                   // already join the long way round is a building's last side, no target
   double inspect_bend = 0.0;      // > 0: before the search ends, agents look from inspect_standoff at each map
                                   // vertex whose two walls run on within this bend (radians) of straight
-                                  // (planning::StraightVertexInspector: a jamb of a walled-over opening); 0: off
+                                  // (planning::StraightVertices: a jamb of a walled-over opening); 0: off
   double inspect_standoff = 10.0; // world units from such a vertex, square to its walls, on the known side
+  int inspect_unwalled = 0;       // > 0, open worlds: before the search ends, agents also look from
+                                  // planning.frontier_setback at each map vertex no map wall reaches and each
+                                  // rejected vertex with at least this many detections off every map wall
+                                  // (planning::UnwalledVertices: a hollow building's corners); 0: off
   static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };

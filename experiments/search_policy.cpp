@@ -28,9 +28,14 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
     const double step = MotionFor(config, world).step_length;
     blocks_.emplace(num_agents, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
   }
-  if (config.search.inspect_bend > 0)
-    inspector_.emplace(config.search.inspect_bend, config.search.inspect_standoff, config.search.give_up_distance,
-                       config.search.give_up_steps);
+  planning::VertexInspectionOptions inspection;
+  inspection.max_bend = config.search.inspect_bend;
+  inspection.standoff = config.search.inspect_standoff;
+  inspection.unwalled_detections = world.has_boundary() ? 0 : config.search.inspect_unwalled;
+  inspection.unwalled_standoff = config.planning.frontier_setback;
+  inspection.reach = config.search.give_up_distance;
+  inspection.looks = config.search.give_up_steps;
+  if (inspection.max_bend > 0 || inspection.unwalled_detections > 0) inspector_.emplace(inspection);
 }
 
 std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapView& view) {
@@ -75,7 +80,7 @@ void SearchPolicy::CountDwelling(const LoopState& state, const std::vector<Vec2>
   // Inspection targets are the inspector's to retire.
   std::vector<planning::FrontierTarget> frontiers, before;
   for (size_t i = 0; i < targets_.size(); ++i)
-    if (!planning::StraightVertexInspector::IsInspection(targets_[i].frontier_id))
+    if (!planning::VertexInspector::IsInspection(targets_[i].frontier_id))
       frontiers.push_back(targets_[i]), before.push_back(original_[i]);
   for (size_t i : dwell_.CountStanding(frontiers, before, agents, standing))
     given_up_.GiveUp(frontiers[i].frontier_id, state.view->frontiers, &before[i].point);
@@ -121,7 +126,7 @@ sim::StepResult SearchPolicy::AfterStep(const LoopState& state, int agent, const
   if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, c.path.points, trail.back(), step.pose.position());
   // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward giving
   // it up as if it stood next to it; all of it counts as probed.
-  if (stuck && found && planning::StraightVertexInspector::IsInspection(c.frontier_id))
+  if (stuck && found && planning::VertexInspector::IsInspection(c.frontier_id))
     inspector_->GiveUp(c.frontier_id);
   else if (stuck && found && dwell_.Count(c.frontier_id))
     given_up_.GiveUp(c.frontier_id, state.view->frontiers);

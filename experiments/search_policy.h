@@ -8,8 +8,9 @@
 // for search.unreachable_steps steps ("unreachable").  With search.block_when_stuck, where an agent's steps make
 // no headway along its path the planners get a short wall across its way (planning::MotionBlocks); with
 // search.close_buildings, in open worlds a building's last side (planning::ClosesWallChain) is no target; with
-// search.inspect_bend, once no frontier is left agents look from close by at the map vertices that walls run
-// straight through (planning::StraightVertexInspector) before the search ends.
+// search.inspect_bend and search.inspect_unwalled, once no frontier is left agents look from close by at the
+// map vertices that walls run straight through and (open worlds) those the map has no walls for
+// (planning::VertexInspector) before the search ends.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -21,7 +22,7 @@
 #include "planning/motion_blocks.h"
 #include "planning/planner.h"
 #include "planning/search_policy.h"
-#include "planning/straight_vertices.h"
+#include "planning/vertex_inspector.h"
 
 namespace toponav::experiments {
 
@@ -58,7 +59,7 @@ class SearchPolicy : public AgentPolicy {
   planning::FrontierCommitment commitment_;
   planning::StuckMonitor stuck_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
-  std::optional<planning::StraightVertexInspector> inspector_;  // search.inspect_bend > 0 only
+  std::optional<planning::VertexInspector> inspector_;  // search.inspect_bend > 0 only
   // This step's targets (pushed through where agents dwelt, and as they were before) and choices.
   std::vector<planning::FrontierTarget> targets_, original_;
   std::vector<planning::FrontierChoice> choices_;

@@ -1,6 +1,10 @@
 #include "learning/peaks.h"
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
+
+#include "core/geometry.h"
 
 #include "core/error.h"
 
@@ -33,6 +37,23 @@ Peak FloodComponent(const std::vector<float>& prob, const std::vector<char>& on,
   return best;
 }
 
+// The offset, in cells, of the centroid of three neighbouring values (before, at, after the peak): where the
+// network spreads a vertex over two cells, it lies between them.
+double CentroidOffset(float before, float at, float after) {
+  const float sum = before + at + after;
+  return sum > 0.0f ? std::clamp(double(after - before) / sum, -0.5, 0.5) : 0.0;
+}
+
+// The peak's range and bearing, refined within its cell by the centroid along each axis (range rows beyond
+// the grid count as 0; bearing wraps around).
+std::pair<double, double> RefinedRangeBearing(const std::vector<float>& prob, const core::RangeBearingGrid& g, const Peak& p) {
+  auto at = [&](int r, int c) { return r < 0 || r >= g.rows ? 0.0f : prob[g.Index(r, (c + g.cols) % g.cols)]; };
+  const double dr = CentroidOffset(at(p.row - 1, p.col), p.value, at(p.row + 1, p.col));
+  const double dc = CentroidOffset(at(p.row, p.col - 1), p.value, at(p.row, p.col + 1));
+  const double bearing_step = 2.0 * core::kPi / g.cols;
+  return {g.RowRange(p.row) + dr * g.RangeStep(), core::WrapAngle(g.ColBearing(p.col) + dc * bearing_step)};
+}
+
 }  // namespace
 
 std::vector<Peak> DetectPeaks(const std::vector<float>& prob, const core::RangeBearingGrid& grid, float threshold) {
@@ -57,8 +78,12 @@ std::vector<core::Detection> DecodeDetections(const std::vector<float>& prob, co
   std::vector<core::Detection> out;
   for (const Peak& p : DetectPeaks(prob, grid, o.threshold)) {
     core::Detection d;
-    d.range = grid.RowRange(p.row);
-    d.bearing = grid.ColBearing(p.col);
+    if (o.sub_bin) {
+      std::tie(d.range, d.bearing) = RefinedRangeBearing(prob, grid, p);
+    } else {
+      d.range = grid.RowRange(p.row);
+      d.bearing = grid.ColBearing(p.col);
+    }
     d.polar = {o.sigma_range * o.sigma_range, 0.0, o.sigma_bearing * o.sigma_bearing};
     for (int k = 0; k < 4; ++k) d.labels[size_t(k)] = label_probs[4 * grid.Index(p.row, p.col) + size_t(k)];
     out.push_back(d);

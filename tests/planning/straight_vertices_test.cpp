@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.h"
-
 namespace toponav::planning {
 namespace {
 
@@ -32,48 +30,6 @@ TEST(StraightVertices, VerticesWallsRunStraightThroughAreFoundWithLookoutsOnTheK
   // (40, 60) bends by 0.025 rad and (60, 60.5) by 0.042.
   EXPECT_EQ(StraightVertices(WalledOverOpening(), 0.03, 10.0).size(), 1u);
   EXPECT_TRUE(StraightVertices(WalledOverOpening(), 0.02, 10.0).empty());
-}
-
-TEST(StraightVertexInspector, AgentsAreSentToEachUninspectedVertexUntilOneHasLookedLongEnough) {
-  const mapping::MapView view = WalledOverOpening();
-  const VisibilityGraph graph(view, {}, false);
-  StraightVertexInspector inspector(0.3, 10.0, 4.0, 2);
-  std::vector<FrontierTarget> targets = inspector.Targets(view, graph, {{20, 20}});
-  ASSERT_EQ(targets.size(), 2u);
-  EXPECT_EQ(targets[0].frontier_id, StraightVertexInspector::kIdBase - 1);
-  EXPECT_TRUE(StraightVertexInspector::IsInspection(targets[0].frontier_id));
-  EXPECT_NEAR(targets[0].point.y, 50.0, 0.01);
-  // An agent beside the first lookout: one look leaves it a target, the second makes it done, for good.
-  EXPECT_EQ(inspector.Targets(view, graph, {{41, 48}}).size(), 2u);
-  targets = inspector.Targets(view, graph, {{41, 48}});
-  ASSERT_EQ(targets.size(), 1u);
-  EXPECT_EQ(targets[0].frontier_id, StraightVertexInspector::kIdBase - 2);
-  EXPECT_EQ(inspector.inspected(), 1);
-  EXPECT_EQ(inspector.targeted(), 2);
-  EXPECT_EQ(inspector.Targets(view, graph, {{20, 20}}).size(), 1u);
-}
-
-TEST(StraightVertexInspector, VerticesNoAgentCanGetToAreGivenUp) {
-  mapping::MapView view = WalledOverOpening();
-  AddWalls(&view, {{15, 15}, {25, 15}, {25, 25}, {15, 25}}, true);  // a box round the agent
-  const VisibilityGraph graph(view, {}, false);
-  StraightVertexInspector inspector(0.3, 10.0, 4.0, 1);
-  EXPECT_TRUE(inspector.Targets(view, graph, {{20, 20}}).empty());
-  EXPECT_EQ(inspector.inspected(), 2);
-  EXPECT_THROW(StraightVertexInspector(0.0, 10.0, 4.0, 1), core::InternalError);
-  EXPECT_THROW(StraightVertexInspector(0.3, 10.0, 4.0, 0), core::InternalError);
-}
-
-TEST(StraightVertexInspector, AVertexGivenUpIsNoTargetAgain) {
-  const mapping::MapView view = WalledOverOpening();
-  const VisibilityGraph graph(view, {}, false);
-  StraightVertexInspector inspector(0.3, 10.0, 4.0, 1);
-  ASSERT_EQ(inspector.Targets(view, graph, {{20, 20}}).size(), 2u);
-  inspector.GiveUp(StraightVertexInspector::kIdBase - 2);  // e.g. the agent made no headway toward it
-  const std::vector<FrontierTarget> left = inspector.Targets(view, graph, {{20, 20}});
-  ASSERT_EQ(left.size(), 1u);
-  EXPECT_EQ(left[0].frontier_id, StraightVertexInspector::kIdBase - 1);
-  EXPECT_EQ(inspector.inspected(), 1);
 }
 
 }  // namespace
