@@ -39,7 +39,7 @@ void VertexInspector::GiveUp(int frontier_id) {
 }
 
 std::vector<FrontierTarget> VertexInspector::Targets(const mapping::MapView& view, const VisibilityGraph& graph,
-                                                             const std::vector<Vec2>& agents) {
+                                                     const std::vector<Vec2>& agents) {
   std::vector<InspectionSite> open;
   std::vector<Vec2> lookouts;
   for (InspectionSite& s : Sites(view))
