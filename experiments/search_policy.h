@@ -59,7 +59,7 @@ class SearchPolicy : public AgentPolicy {
   planning::FrontierCommitment commitment_;
   planning::StuckMonitor stuck_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
-  std::optional<planning::VertexInspector> inspector_;  // search.inspect_bend > 0 only
+  std::optional<planning::VertexInspector> inspector_;  // search.inspect_bend or inspect_unwalled only
   // This step's targets (pushed through where agents dwelt, and as they were before) and choices.
   std::vector<planning::FrontierTarget> targets_, original_;
   std::vector<planning::FrontierChoice> choices_;

@@ -38,8 +38,8 @@ struct TrialResult {
   std::vector<double> distance;   // travelled per agent
   int nudges = 0;                 // stuck-agent perturbations
   int give_ups = 0;               // frontiers given up (agents stood next to them, or were stuck on the way)
-  int inspections = 0;            // map vertices walls run straight through that agents were sent to look
-                                  // at before the end (search.inspect_bend)
+  int inspections = 0;            // map vertices agents were sent to look at before the end: walls run straight
+                                  // through them (search.inspect_bend) or none reach them (search.inspect_unwalled)
   std::vector<core::Segment2> blocks;  // motion blocks added (search.block_when_stuck)
   std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;

@@ -4,9 +4,8 @@
 #include <tuple>
 #include <utility>
 
-#include "core/geometry.h"
-
 #include "core/error.h"
+#include "core/geometry.h"
 
 namespace toponav::learning {
 
