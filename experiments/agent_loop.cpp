@@ -70,7 +70,7 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   LoopResult r;
   r.mapper = std::make_unique<mapping::Mapper>(MapperOptionsFor(world, config, o));
   mapping::Mapper& mapper = *r.mapper;
-  auto sensor = CreateSensor(config.sensor, {&world, config.render, o.goal, core::DeriveSeed(seed, 1)});
+  auto sensor = CreateSensor(SensorFor(config, world), {&world, config.render, o.goal, core::DeriveSeed(seed, 1)});
   core::Rng rng(core::DeriveSeed(seed, 2));
   const sim::MotionOptions motion_options = MotionFor(config, world);
   sim::MotionSim motion(world, motion_options);
@@ -84,6 +84,7 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   state.world = &world;
   state.trails = &r.paths;
   state.step_length = motion_options.step_length;
+  state.max_steps = o.max_steps;
   std::vector<core::Observation> observations;
   state.observations = &observations;
   mapping::MapView view;

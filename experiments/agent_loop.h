@@ -22,6 +22,7 @@ namespace toponav::experiments {
 // What a policy sees at a step.  The pointers are valid during the call.
 struct LoopState {
   int step = 0;
+  int max_steps = 0;                                        // the run's step cap (0: none)
   const core::World* world = nullptr;
   const mapping::MapView* view = nullptr;                   // after this step's observations
   std::vector<core::Pose2> poses;                           // before the agents move

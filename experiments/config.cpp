@@ -63,6 +63,8 @@ const core::OptionFields<OpenWorldOptions>& OpenWorldOptions::Fields() {
   static const core::OptionFields<O> fields{
       {"step_length", &O::step_length, 0.01, 50.0},
       {"mcmc_every", &O::mcmc_every, 1, 100000},
+      {"sub_bin", &O::sub_bin},
+      {"sigma_bearing", &O::sigma_bearing, 0.0, 3.0},
   };
   return fields;
 }
@@ -91,6 +93,14 @@ sim::MotionOptions MotionFor(const Config& config, const core::World& world) {
   sim::MotionOptions m = config.motion;
   if (!world.has_boundary()) m.step_length = config.open_world.step_length;
   return m;
+}
+
+SensorConfig SensorFor(const Config& config, const core::World& world) {
+  SensorConfig s = config.sensor;
+  if (world.has_boundary()) return s;
+  s.learned.sub_bin = config.open_world.sub_bin;
+  if (config.open_world.sigma_bearing > 0) s.learned.sigma_bearing = config.open_world.sigma_bearing;
+  return s;
 }
 
 namespace {

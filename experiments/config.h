@@ -103,11 +103,16 @@ struct NavigationOptions {
 };
 
 // What differs in open worlds (the office park), YAML section `open_world:`: agents take the longer outdoor
-// step (the reference's outdoor motion primitive), and MCMC runs more often at the same proposals per step
-// (a call proposes mapping.mcmc_samples * mcmc_every / bench.mcmc_every, at least 1).
+// step (the reference's outdoor motion primitive), MCMC runs more often at the same proposals per step
+// (a call proposes mapping.mcmc_samples * mcmc_every / bench.mcmc_every, at least 1), and the learned sensor
+// may place each detection within its network cell, with its own bearing sigma.
 struct OpenWorldOptions {
   double step_length = 3.6;  // world units per agent step (motion.step_length elsewhere)
   int mcmc_every = 2;        // MCMC cadence in steps (bench.mcmc_every elsewhere; 0 there turns MCMC off)
+  bool sub_bin = false;      // learned sensor: a peak's range and bearing move to the centroid of its cell and
+                             // neighbours (learning::DecodeOptions::sub_bin); elsewhere a peak sits at its cell's centre
+  double sigma_bearing = 0.0;  // > 0: the learned sensor's reported bearing sigma (radians; sensor.sigma_bearing
+                               // elsewhere); 0: sensor.sigma_bearing here too
   static const core::OptionFields<OpenWorldOptions>& Fields();
 };
 
@@ -139,6 +144,8 @@ struct Config {
 
 // The motion options agents use in 'world' (open worlds take open_world.step_length): derived once, here.
 sim::MotionOptions MotionFor(const Config& config, const core::World& world);
+// The sensor that observes 'world' (open worlds take open_world.sub_bin and sigma_bearing): derived once, here.
+SensorConfig SensorFor(const Config& config, const core::World& world);
 
 // Loads and validates 'path'.  Every section and key is optional (defaults above); unknown keys are errors.
 Config LoadConfig(const std::string& path);

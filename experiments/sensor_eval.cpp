@@ -98,7 +98,7 @@ SensorEval EvaluateSensor(const Config& config, const SensorEvalOptions& o) {
   for (uint64_t seed : o.seeds) {
     const core::World w = sim::GenerateWorld(o.kind, config.worlds, seed);
     const sim::RayCaster caster(w);
-    auto sensor = CreateSensor(config.sensor, {&w, config.render, std::nullopt, core::DeriveSeed(seed, 1)});
+    auto sensor = CreateSensor(SensorFor(config, w), {&w, config.render, std::nullopt, core::DeriveSeed(seed, 1)});
     for (int i = 0; i < o.samples_per_world; ++i) {
       const core::Pose2 pose = sim::SamplePose(w, {sim::Split::kVal, o.kind, seed, i}, config.datagen);
       const std::vector<sim::VisibleVertex> truth = caster.VisibleVertices(pose, grid.max_range);

@@ -42,7 +42,6 @@ const core::OptionFields<LearnedSensorOptions>& LearnedSensorOptions::Fields() {
       {"sigma_range", &O::sigma_range, 0.01, 100.0},
       {"sigma_bearing", &O::sigma_bearing, 1e-4, 3.0},
       {"threads", &O::threads, 0, 256},
-      {"sub_bin", &O::sub_bin},
   };
   return fields;
 }

@@ -33,7 +33,7 @@ struct LearnedSensorOptions {
   double sigma_range = 5.0;      // the covariance reported with each detection (world units, radians)
   double sigma_bearing = 0.125;
   int threads = 1;               // CPU threads for the network (a bench runs one trial per core); 0: LibTorch's default
-  bool sub_bin = false;          // a peak's range and bearing move within its cell (learning::DecodeOptions::sub_bin)
+  bool sub_bin = false;          // not a key: set from open_world.sub_bin by experiments::SensorFor
   static const core::OptionFields<LearnedSensorOptions>& Fields();  // the keys and their ranges
 };
 

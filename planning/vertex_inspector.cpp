@@ -39,7 +39,7 @@ void VertexInspector::GiveUp(int frontier_id) {
 }
 
 std::vector<FrontierTarget> VertexInspector::Targets(const mapping::MapView& view, const VisibilityGraph& graph,
-                                                     const std::vector<Vec2>& agents) {
+                                                     const std::vector<Vec2>& agents, double max_cost) {
   std::vector<InspectionSite> open;
   std::vector<Vec2> lookouts;
   for (InspectionSite& s : Sites(view))
@@ -63,7 +63,7 @@ std::vector<FrontierTarget> VertexInspector::Targets(const mapping::MapView& vie
         if (path && path.cost < best) best = path.cost, t.point = s.lookouts[k];
       }
     first += s.lookouts.size();
-    if ((near && ++looked_[s.id] >= o_.looks) || !std::isfinite(best)) {
+    if ((near && ++looked_[s.id] >= o_.looks) || !std::isfinite(best) || best > max_cost) {
       inspected_.push_back(s.position);
       continue;
     }

@@ -2,6 +2,7 @@
 // Before a search ends: agents look from close by at the map vertices that say the map may be wrong -- those
 // map walls run straight through (planning/straight_vertices.h: a walled-over doorway's jambs) and those the
 // map has no walls for (planning/unwalled_vertices.h: a hollow building's corners).
+#include <limits>
 #include <map>
 #include <set>
 #include <vector>
@@ -33,9 +34,11 @@ class VertexInspector {
   // before the search may end), and stays inspected (a vertex within 'reach' of an inspected one's place).
   explicit VertexInspector(const VertexInspectionOptions& options);
   // One target per vertex not yet inspected, at its lookout nearest (by path) to an agent.  Vertices looked
-  // at long enough, and those no agent can get to, become inspected.
+  // at long enough, and those no agent can get to within 'max_cost' (path length, world units: what the run
+  // has left), become inspected.
   std::vector<FrontierTarget> Targets(const mapping::MapView& view, const VisibilityGraph& graph,
-                                      const std::vector<core::Vec2>& agents);
+                                      const std::vector<core::Vec2>& agents,
+                                      double max_cost = std::numeric_limits<double>::infinity());
   // The vertex of target 'frontier_id' (from the last Targets call) counts as inspected: no agent can get there.
   void GiveUp(int frontier_id);
   int inspected() const { return int(inspected_.size()); }  // vertices done: looked at, given up or out of reach

@@ -75,7 +75,7 @@ int RunObserve(const ObserveArgs& a) {
     setup.render = cfg.render;
     setup.goal = w.goal;
     setup.seed = experiments::ParseSeed(a.seed);
-    ob = experiments::CreateSensor(cfg.sensor, setup)->Observe(pose, 0);
+    ob = experiments::CreateSensor(experiments::SensorFor(cfg, w), setup)->Observe(pose, 0);
     j["sensor"] = experiments::ToString(cfg.sensor.kind);
     j["detections"] = DetectionsJson(ob);
   }

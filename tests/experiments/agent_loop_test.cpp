@@ -13,6 +13,7 @@ class WalkEast : public AgentPolicy {
   explicit WalkEast(int steps) : steps_(steps) {}
   bool Plan(const LoopState& state, std::vector<std::vector<core::Vec2>>* paths) override {
     observations.push_back(state.view->num_observations);
+    max_steps = state.max_steps;
     this_step.push_back(state.observations ? int(state.observations->size()) : -1);
     if (state.step >= steps_) return false;
     for (size_t a = 0; a < paths->size(); ++a) (*paths)[a] = {state.poses[a].position() + core::Vec2{10, 0}};
@@ -25,6 +26,7 @@ class WalkEast : public AgentPolicy {
   }
   std::vector<int> observations, this_step;
   int after_steps = 0;
+  int max_steps = -1;  // what the loop told the policy its cap is
 
  private:
   int steps_;
@@ -85,6 +87,7 @@ TEST(AgentLoop, TheStepCapEndsARunThePolicyDoesNot) {
   const Config config;
   const LoopResult r = RunAgentLoop(w, config, o, policy, 5);
   EXPECT_EQ(r.steps, 7);
+  EXPECT_EQ(policy.max_steps, 7) << "the policy knows the cap (an inspection it cannot finish is not started)";
   EXPECT_FALSE(r.ended_by_policy);
   EXPECT_EQ(r.mcmc_calls, 3) << "steps 0, 3 and 6";
 }

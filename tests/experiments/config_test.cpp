@@ -64,6 +64,23 @@ TEST(Config, OpenWorldSettingsFormOneBlock) {
   EXPECT_DOUBLE_EQ(MotionFor(c, closed).step_length, c.motion.step_length);
 }
 
+TEST(Config, SubBinDecodingAndItsBearingSigmaApplyInOpenWorldsOnly) {
+  const Config c = ParseConfig(
+      "sensor:\n  kind: learned\n  model: m.pt\n  sigma_bearing: 0.025\nopen_world:\n  sub_bin: true\n"
+      "  sigma_bearing: 0.02\n",
+      "x.yaml");
+  core::World open;
+  open.bounds = {{0, 0}, {100, 100}};
+  core::World closed = open;
+  closed.boundary = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+  EXPECT_TRUE(SensorFor(c, open).learned.sub_bin);
+  EXPECT_DOUBLE_EQ(SensorFor(c, open).learned.sigma_bearing, 0.02);
+  EXPECT_FALSE(SensorFor(c, closed).learned.sub_bin);
+  EXPECT_DOUBLE_EQ(SensorFor(c, closed).learned.sigma_bearing, 0.025);
+  EXPECT_FALSE(SensorFor(ParseConfig("", "empty.yaml"), open).learned.sub_bin) << "off by default";
+  EXPECT_EQ(ErrorOf("sensor:\n  sub_bin: true\n").key(), "sensor.sub_bin") << "the key lives in open_world";
+}
+
 // Every declared numeric key of a section: the YAML reader rejects a value past its range naming the key, and
 // Validate() rejects the same value set in code, naming the same key.
 template <class Options, class Get>

@@ -55,6 +55,24 @@ TEST(VertexInspector, VerticesNoAgentCanGetToAreGivenUp) {
   EXPECT_THROW(VertexInspector{Straight(0)}, core::InternalError);
 }
 
+TEST(VertexInspector, VerticesFartherThanTheRunHasLeftAreNotStartedFor) {
+  const mapping::MapView view = WalledOverOpening();
+  const VisibilityGraph graph(view, {}, false);
+  const Vec2 agent{20, 20};
+  std::vector<FrontierTarget> all = VertexInspector(Straight(1)).Targets(view, graph, {agent});
+  ASSERT_EQ(all.size(), 2u);
+  std::vector<double> cost;
+  for (const auto& t : all) cost.push_back(graph.Plan(agent, t.point).cost);
+  const size_t near = cost[0] < cost[1] ? 0 : 1;
+  ASSERT_GT(cost[1 - near], cost[near] + 1.0);
+  VertexInspector inspector(Straight(1));
+  const std::vector<FrontierTarget> left = inspector.Targets(view, graph, {agent}, cost[near] + 0.5);
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].frontier_id, all[near].frontier_id);
+  EXPECT_EQ(inspector.inspected(), 1) << "the far vertex is done with";
+  EXPECT_TRUE(inspector.Targets(view, graph, {agent}, 0.0).empty());
+}
+
 TEST(VertexInspector, AVertexGivenUpIsNoTargetAgain) {
   const mapping::MapView view = WalledOverOpening();
   const VisibilityGraph graph(view, {}, false);
