@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "experiments/sensor_factory.h"
@@ -57,6 +58,12 @@ void AddToMap(const std::vector<core::Observation>& observations, mapping::Mappe
 }
 
 }  // namespace
+
+double PathBudget(const LoopState& state, int reserve_steps) {
+  TOPONAV_CHECK(state.step_length > 0, "step length " << state.step_length);
+  if (state.max_steps <= 0) return std::numeric_limits<double>::infinity();
+  return std::max(0, state.max_steps - state.step - reserve_steps) * state.step_length;
+}
 
 sim::StepResult NudgeRandomly(sim::MotionSim& motion, int agent, double distance, core::Rng& rng) {
   const double angle = rng.Uniform(-core::kPi, core::kPi);

@@ -31,6 +31,10 @@ struct LoopState {
   double step_length = 0.0;                                 // how far an agent steps in this world
 };
 
+// How far (world units of path) an agent can still walk before the step cap while keeping 'reserve_steps'
+// steps in hand: (max_steps - step - reserve_steps) * step_length, at least 0; infinity without a cap.
+double PathBudget(const LoopState& state, int reserve_steps);
+
 // Who decides where agents go and when a run ends.
 class AgentPolicy {
  public:

@@ -122,6 +122,11 @@ void ValidateAcrossSections(const Config& c) {
   if (c.bench.first_seed > core::kMaxSeed - uint64_t(c.bench.num_seeds))
     throw core::ConfigError(c.source, "bench.first_seed", std::to_string(c.bench.first_seed),
                             "first_seed + num_seeds must stay within [0, " + std::to_string(core::kMaxSeed) + "]");
+  // The open worlds' bearing sigma replaces sensor.sigma_bearing there, so it meets the same range.
+  const double sb = c.open_world.sigma_bearing;
+  if (sb > 0 && sb < 1e-4)
+    throw core::ConfigError(c.source, "open_world.sigma_bearing", std::to_string(sb),
+                            "must be 0 (sensor.sigma_bearing) or in [0.0001, 3] as sensor.sigma_bearing");
   if (c.demo.seed > core::kMaxSeed)
     throw core::ConfigError(c.source, "demo.seed", std::to_string(c.demo.seed),
                             "must be in [0, " + std::to_string(core::kMaxSeed) + "]");

@@ -109,8 +109,9 @@ struct NavigationOptions {
 struct OpenWorldOptions {
   double step_length = 3.6;  // world units per agent step (motion.step_length elsewhere)
   int mcmc_every = 2;        // MCMC cadence in steps (bench.mcmc_every elsewhere; 0 there turns MCMC off)
-  bool sub_bin = false;      // learned sensor: a peak's range and bearing move to the centroid of its cell and
-                             // neighbours (learning::DecodeOptions::sub_bin); elsewhere a peak sits at its cell's centre
+  bool sub_bin = false;      // learned sensor: a peak's range and bearing move to the centroid of its cell
+                             // and neighbours (learning::DecodeOptions::sub_bin); elsewhere it sits at the
+                             // cell's centre
   double sigma_bearing = 0.0;  // > 0: the learned sensor's reported bearing sigma (radians; sensor.sigma_bearing
                                // elsewhere); 0: sensor.sigma_bearing here too
   static const core::OptionFields<OpenWorldOptions>& Fields();

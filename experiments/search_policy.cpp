@@ -1,8 +1,6 @@
 #include "experiments/search_policy.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace toponav::experiments {
 
@@ -103,9 +101,7 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   for (const auto& p : state.poses) problem.agents.push_back(p.position());
   if (targets_.empty() && inspector_) {
     // A lookout the agents cannot reach and look from within the steps left is not worth starting for.
-    double budget = std::numeric_limits<double>::infinity();
-    if (state.max_steps > 0) budget = std::max(0, state.max_steps - state.step - search_.give_up_steps) * state.step_length;
-    targets_ = inspector_->Targets(view, graph, problem.agents, budget);
+    targets_ = inspector_->Targets(view, graph, problem.agents, PathBudget(state, search_.give_up_steps));
     original_ = targets_;
   }
   choices_ = planner_->Plan(problem);

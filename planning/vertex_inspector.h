@@ -35,7 +35,8 @@ class VertexInspector {
   explicit VertexInspector(const VertexInspectionOptions& options);
   // One target per vertex not yet inspected, at its lookout nearest (by path) to an agent.  Vertices looked
   // at long enough, and those no agent can get to within 'max_cost' (path length, world units: what the run
-  // has left), become inspected.
+  // has left), become inspected.  The budget is checked at every call, so a vertex an agent is still looking
+  // at is let go too once its lookout lies beyond the budget (the run's last looks are not started).
   std::vector<FrontierTarget> Targets(const mapping::MapView& view, const VisibilityGraph& graph,
                                       const std::vector<core::Vec2>& agents,
                                       double max_cost = std::numeric_limits<double>::infinity());

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "tests/testing/worlds.h"
 
 namespace toponav::experiments {
@@ -90,6 +92,17 @@ TEST(AgentLoop, TheStepCapEndsARunThePolicyDoesNot) {
   EXPECT_EQ(policy.max_steps, 7) << "the policy knows the cap (an inspection it cannot finish is not started)";
   EXPECT_FALSE(r.ended_by_policy);
   EXPECT_EQ(r.mcmc_calls, 3) << "steps 0, 3 and 6";
+}
+
+TEST(AgentLoop, ThePathBudgetIsTheStepsLeftBeforeTheCapLessTheReserveTimesTheStepLength) {
+  LoopState s;
+  s.step_length = 2.0;
+  s.step = 90;
+  EXPECT_EQ(PathBudget(s, 6), std::numeric_limits<double>::infinity()) << "no cap";
+  s.max_steps = 100;  // steps 90 .. 99 are left: 10, 6 of them in hand
+  EXPECT_DOUBLE_EQ(PathBudget(s, 6), 8.0);
+  EXPECT_DOUBLE_EQ(PathBudget(s, 0), 20.0);
+  EXPECT_DOUBLE_EQ(PathBudget(s, 12), 0.0) << "never negative";
 }
 
 TEST(AgentLoop, TheSameSeedGivesTheSameMap) {

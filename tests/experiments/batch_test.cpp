@@ -14,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <set>
+#include <vector>
 
 namespace toponav::experiments {
 namespace {
@@ -27,11 +28,25 @@ Config TinyBench() {
       "tiny.yaml");
 }
 
+std::string DirPrefix() { return "toponav_batch_" + std::to_string(::getpid()) + "_"; }
+
 std::string FreshDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("toponav_batch_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path d = fs::temp_directory_path() / (DirPrefix() + name);
   fs::remove_all(d);
   return d.string();
 }
+
+// This process's batch directories go when its tests are done.
+class RemoveBatchDirs : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::vector<fs::path> mine;
+    for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
+      if (e.path().filename().string().rfind(DirPrefix(), 0) == 0) mine.push_back(e.path());
+    for (const auto& p : mine) fs::remove_all(p);
+  }
+};
+::testing::Environment* const kRemoveBatchDirs = ::testing::AddGlobalTestEnvironment(new RemoveBatchDirs);
 
 // A quiet batch writing to a fresh directory.
 BatchOptions QuietBatch(const std::string& name) {

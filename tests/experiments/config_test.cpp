@@ -79,6 +79,7 @@ TEST(Config, SubBinDecodingAndItsBearingSigmaApplyInOpenWorldsOnly) {
   EXPECT_DOUBLE_EQ(SensorFor(c, closed).learned.sigma_bearing, 0.025);
   EXPECT_FALSE(SensorFor(ParseConfig("", "empty.yaml"), open).learned.sub_bin) << "off by default";
   EXPECT_EQ(ErrorOf("sensor:\n  sub_bin: true\n").key(), "sensor.sub_bin") << "the key lives in open_world";
+  EXPECT_EQ(ErrorOf("open_world:\n  sigma_bearing: 0.00001\n").key(), "open_world.sigma_bearing");
 }
 
 // Every declared numeric key of a section: the YAML reader rejects a value past its range naming the key, and
