@@ -81,7 +81,8 @@ struct SearchOptions {
                                   // (planning::StraightVertices: a jamb of a walled-over opening); 0: off
   double inspect_standoff = 10.0; // world units from such a vertex, square to its walls, on the known side
   int inspect_unwalled = 0;       // > 0, open worlds: before the search ends, agents also look from
-                                  // planning.frontier_setback at each map vertex no map wall reaches and each
+                                  // planning.frontier_setback at each map vertex no map wall reaches, each
+                                  // one a single wall reaches with known space all round it, and each
                                   // rejected vertex with at least this many detections off every map wall
                                   // (planning::UnwalledVertices: a hollow building's corners); 0: off
   static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges

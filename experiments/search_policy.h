@@ -9,7 +9,7 @@
 // no headway along its path the planners get a short wall across its way (planning::MotionBlocks); with
 // search.close_buildings, in open worlds a building's last side (planning::ClosesWallChain) is no target; with
 // search.inspect_bend and search.inspect_unwalled, once no frontier is left agents look from close by at the
-// map vertices that walls run straight through and (open worlds) those the map has no walls for
+// map vertices that walls run straight through and (open worlds) those the map lacks walls for
 // (planning::VertexInspector) before the search ends, those they can reach and look from within the steps left.
 #include <functional>
 #include <memory>

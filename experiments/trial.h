@@ -39,7 +39,8 @@ struct TrialResult {
   int nudges = 0;                 // stuck-agent perturbations
   int give_ups = 0;               // frontiers given up (agents stood next to them, or were stuck on the way)
   int inspections = 0;            // map vertices agents were sent to look at before the end: walls run straight
-                                  // through them (search.inspect_bend) or none reach them (search.inspect_unwalled)
+                                  // through them (search.inspect_bend) or the map lacks their walls
+                                  // (search.inspect_unwalled)
   std::vector<core::Segment2> blocks;  // motion blocks added (search.block_when_stuck)
   std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;

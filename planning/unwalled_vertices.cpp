@@ -1,7 +1,7 @@
 #include "planning/unwalled_vertices.h"
 
 #include <cmath>
-#include <set>
+#include <map>
 
 #include "planning/navigation.h"
 
@@ -13,11 +13,22 @@ namespace {
 
 constexpr double kOnWall = 2.0;         // a rejected vertex this close to a map wall is on it (units)
 constexpr double kNeighbourhood = 45.0; // the map vertices that say which way is out (units)
+constexpr double kRound = 3.0;          // how far round a vertex known space is looked for (units)
+constexpr int kRoundSamples = 16, kKnownAllRound = 14;  // directions, and how many must be known
 
 bool OnAWall(const mapping::MapView& view, const Vec2& p) {
   for (const auto& w : view.walls)
     if (core::DistanceToSegment(p, {w.pa, w.pb}) < kOnWall) return true;
   return false;
+}
+
+// Whether known space lies all round 'p': a corner has it on one side of its two walls only, a building's
+// corner with known space inside as well is hollow.
+bool KnownAllRound(const mapping::MapView& view, const Vec2& p) {
+  int known = 0;
+  for (int k = 0; k < kRoundSamples; ++k)
+    known += InKnown(view, p + core::Rotate({kRound, 0}, 2 * core::kPi * k / kRoundSamples)) ? 1 : 0;
+  return known >= kKnownAllRound;
 }
 
 // The unit vector from the mean of the map vertices near 'v' (other than v) to v; +x when there are none.
@@ -35,11 +46,14 @@ Vec2 Outward(const mapping::MapView& view, const mapping::MapVertex& v) {
 }  // namespace
 
 std::vector<InspectionSite> UnwalledVertices(const mapping::MapView& view, int min_detections, double standoff) {
-  std::set<int> walled;
-  for (const auto& w : view.walls) walled.insert(w.a), walled.insert(w.b);
+  std::map<int, int> walls_at;  // vertex id -> the map walls that end there
+  for (const auto& w : view.walls) ++walls_at[w.a], ++walls_at[w.b];
   std::vector<const mapping::MapVertex*> found;
-  for (const auto& v : view.vertices)
-    if (!walled.count(v.id)) found.push_back(&v);
+  for (const auto& v : view.vertices) {
+    const auto it = walls_at.find(v.id);
+    const int walls = it == walls_at.end() ? 0 : it->second;
+    if (walls == 0 || (walls == 1 && KnownAllRound(view, v.position))) found.push_back(&v);
+  }
   for (const auto& v : view.rejected)
     if (v.num_detections >= min_detections && !OnAWall(view, v.position)) found.push_back(&v);
   std::vector<InspectionSite> out;

@@ -1,7 +1,7 @@
 #pragma once
 // Before a search ends: agents look from close by at the map vertices that say the map may be wrong -- those
 // map walls run straight through (planning/straight_vertices.h: a walled-over doorway's jambs) and those the
-// map has no walls for (planning/unwalled_vertices.h: a hollow building's corners).
+// map lacks walls for (planning/unwalled_vertices.h: a hollow building's corners).
 #include <limits>
 #include <map>
 #include <set>
@@ -17,8 +17,8 @@ namespace toponav::planning {
 struct VertexInspectionOptions {
   double max_bend = 0.0;            // > 0: vertices walls run straight through within this bend (radians) ...
   double standoff = 10.0;           // ... looked at from this far (world units)
-  int unwalled_detections = 0;      // > 0: vertices without walls (rejected ones with at least this many
-                                    // detections) ...
+  int unwalled_detections = 0;      // > 0: vertices the map lacks walls for (rejected ones with at least
+                                    // this many detections) ...
   double unwalled_standoff = 14.0;  // ... looked at from this far (world units)
   double reach = 4.0;               // an agent this close to a lookout is looking (world units) ...
   int looks = 6;                    // ... and after this many Targets calls the vertex is inspected
