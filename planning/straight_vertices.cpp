@@ -9,9 +9,6 @@ namespace toponav::planning {
 
 using core::Vec2;
 
-namespace {
-
-// The far ends of the walls at each vertex id.
 std::map<int, std::vector<Vec2>> WallEnds(const mapping::MapView& view) {
   std::map<int, std::vector<Vec2>> ends;
   for (const auto& w : view.walls) {
@@ -20,8 +17,6 @@ std::map<int, std::vector<Vec2>> WallEnds(const mapping::MapView& view) {
   }
   return ends;
 }
-
-}  // namespace
 
 std::vector<InspectionSite> StraightVertices(const mapping::MapView& view, double max_bend, double standoff) {
   const std::map<int, std::vector<Vec2>> ends = WallEnds(view);

@@ -6,6 +6,7 @@
 // map then draws a wall across the doorway and the search ends "explored" with the rooms behind it cut off.
 // Before the search ends, planning::VertexInspector sends an agent to look at each such vertex from close
 // by, where the jamb shows its gap and the far side's vertices show through the opening.
+#include <map>
 #include <vector>
 
 #include "core/geometry.h"
@@ -19,6 +20,9 @@ struct InspectionSite {
   core::Vec2 position;
   std::vector<core::Vec2> lookouts;
 };
+
+// The far ends of the map walls at each map vertex id (vertices without walls have no entry).
+std::map<int, std::vector<core::Vec2>> WallEnds(const mapping::MapView& view);
 
 // The map vertices with exactly two map walls whose directions from the vertex are within 'max_bend'
 // (radians) of opposite, with their lookouts 'standoff' from the vertex square to its walls, on the known

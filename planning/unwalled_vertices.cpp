@@ -1,7 +1,6 @@
 #include "planning/unwalled_vertices.h"
 
 #include <cmath>
-#include <map>
 
 #include "planning/navigation.h"
 
@@ -46,12 +45,11 @@ Vec2 Outward(const mapping::MapView& view, const mapping::MapVertex& v) {
 }  // namespace
 
 std::vector<InspectionSite> UnwalledVertices(const mapping::MapView& view, int min_detections, double standoff) {
-  std::map<int, int> walls_at;  // vertex id -> the map walls that end there
-  for (const auto& w : view.walls) ++walls_at[w.a], ++walls_at[w.b];
+  const std::map<int, std::vector<Vec2>> ends = WallEnds(view);
   std::vector<const mapping::MapVertex*> found;
   for (const auto& v : view.vertices) {
-    const auto it = walls_at.find(v.id);
-    const int walls = it == walls_at.end() ? 0 : it->second;
+    const auto it = ends.find(v.id);
+    const size_t walls = it == ends.end() ? 0 : it->second.size();
     if (walls == 0 || (walls == 1 && KnownAllRound(view, v.position))) found.push_back(&v);
   }
   for (const auto& v : view.rejected)
