@@ -67,13 +67,15 @@ struct SearchOptions {
   double push_distance = 6.0;
   double give_up_reach = 3.0;     // a new frontier lying this close to a given-up one (middle and ends) is
                                   // given up (the map re-creates the same unmapped wall piece under a new
-                                  // id); 0: off
+                                  // id), and goal-directed trials put a frontier's target no closer than
+                                  // this to where agents were stuck at it; 0: off
   double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
                                        // stood (0: all of it)
   bool tour = false;              // one agent heads for the first frontier of the shortest tour through all
                                   // of them (false: the nearest frontier, the paper's); teams are assigned
   bool block_when_stuck = false;  // where an agent makes no headway along its path for stuck_steps steps, a
-                                  // wall 4 steps long across its way is added for the planners
+                                  // wall 4 steps long across its way is added for the planners (searches and
+                                  // goal-directed trials)
   bool close_buildings = false;   // open worlds: a straight frontier between two map vertices that walls
                                   // already join the long way round is a building's last side, no target
   double inspect_bend = 0.0;      // > 0: before the search ends, agents look from inspect_standoff at each map

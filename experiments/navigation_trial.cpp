@@ -14,6 +14,7 @@
 #include "planning/given_up_frontiers.h"
 #include "planning/lsp_planner.h"
 #include "planning/map_suspects.h"
+#include "planning/motion_blocks.h"
 #include "planning/search_policy.h"
 #include "sim/paths.h"
 
@@ -71,11 +72,14 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // as in a search, and the frontier it stands at is blocked where it stood: a wall the map has not accepted yet
 // (its vertices seen edge-on or from too close) that the optimistic way runs through.  The part of a blocked
 // frontier within search.give_up_probe_radius of the agent is a wall to the planners (the rest of it may hold
-// the opening the agent was heading for); a frontier lying wholly on such parts is no target.  Where the map
-// cuts the goal off (a goal-directed trial's goal is reachable: some wall of the map is false), Recover()
-// tries in turn a way through a doorway hypothesis (planning/doorways.h), the blocked frontiers opened
-// again, and a frontier or a suspected false wall to look at from close by (planning::SuspectInspector); the
-// trial ends "cut_off" only when none is left for cut_off_steps steps.
+// the opening the agent was heading for), and the frontier's target lies on its longest other piece (a
+// frontier with none is no target).  With search.block_when_stuck, steps that make no headway
+// along the path also put a short wall across the way (planning::MotionBlocks): a true wall the map lacks
+// inside known space, with no frontier near to block.
+// Where the map cuts the goal off (a goal-directed trial's goal is reachable: some wall of the map is false),
+// Recover() tries in turn a way through a doorway hypothesis (planning/doorways.h), the blocked frontiers and
+// motion blocks taken back, and a frontier or a suspected false wall to look at from close by
+// (planning::SuspectInspector); the trial ends "cut_off" only when none is left for cut_off_steps steps.
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -87,7 +91,12 @@ class NavigationPolicy : public AgentPolicy {
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         block_reach_(config.search.give_up_distance),
-        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
+        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {
+    if (config.search.block_when_stuck) {
+      const double step = MotionFor(config, world).step_length;
+      blocks_.emplace(1, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
+    }
+  }
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();
@@ -100,10 +109,9 @@ class NavigationPolicy : public AgentPolicy {
     blocked_.Update(state.view->frontiers);
     mapping::MapView view = WithRegionWalls(*state.view, region_);
     for (const auto& e : blocked_.probed()) planning::AddWalls(&view, {e.a, e.b});
+    if (blocks_ && !blocks_->blocks().empty()) view = blocks_->With(view);
     const planning::VisibilityGraph graph(view, planning_, false);
-    std::vector<planning::FrontierTarget> targets;
-    for (const auto& t : planning::FrontierTargets(*state.view, planning_))
-      if (!Covered(state.view->frontiers, t.frontier_id)) targets.push_back(t);
+    const std::vector<planning::FrontierTarget> targets = UnprobedTargets(*state.view);
     if (on_plan) on_plan(state, targets);
     const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
     choice_ = planner_->Plan(problem).at(0);
@@ -124,6 +132,8 @@ class NavigationPolicy : public AgentPolicy {
                             core::Rng& rng) override {
     const bool has_path = choice_.status == planning::PlanStatus::kFound && choice_.path.points.size() > 1;
     const bool stuck = stuck_.NoHeadway((*state.trails)[0], has_path, !has_path, step.pose.position(), step.distance);
+    if (blocks_ && has_path && !(*state.trails)[0].empty())
+      blocks_->Record(agent, choice_.path.points, (*state.trails)[0].back(), step.pose.position());
     if (!stuck_.Record(agent, stuck)) return step;
     const Vec2 at = step.pose.position();
     const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
@@ -141,41 +151,46 @@ class NavigationPolicy : public AgentPolicy {
 
  private:
   // Where the planner finds no way to the goal: the cheapest way through a doorway hypothesis; else, if some
-  // frontiers were given up, they are all opened again (no way this step); else a frontier or a suspected
-  // false wall to look at.
+  // frontiers were given up or motion blocks added, they are all taken back (no way this step); else a
+  // frontier or a suspected false wall to look at.
   planning::FrontierChoice Recover(const mapping::MapView& map, const mapping::MapView& view,
                                    const planning::VisibilityGraph& graph,
                                    const std::vector<planning::FrontierTarget>& targets, const Vec2& at) {
     planning::FrontierChoice c = ThroughDoorway(view, at);
     if (c.status == planning::PlanStatus::kFound) return c;
-    if (blocked_.given_up() > 0) {
+    if (blocked_.given_up() > 0 || (blocks_ && !blocks_->blocks().empty())) {
       blocked_.Clear();
+      if (blocks_) blocks_->Clear();
       return c;
     }
     return inspector_.Choose(map, graph, at, goal_, targets);
+  }
+
+  // The frontiers' targets on their parts the agent was not stuck at (GivenUpFrontiers::Unprobed); the
+  // planners see the frontiers whole, their blocked parts as walls.
+  std::vector<planning::FrontierTarget> UnprobedTargets(const mapping::MapView& map) const {
+    if (blocked_.probed().empty()) return planning::FrontierTargets(map, planning_);
+    mapping::MapView cut = map;
+    cut.frontiers = blocked_.Unprobed(map.frontiers);
+    return planning::FrontierTargets(cut, planning_);
   }
 
   // The way to the goal through the doorway hypothesis (not yet failed) that makes it cheapest.
   planning::FrontierChoice ThroughDoorway(const mapping::MapView& view, const Vec2& at) {
     constexpr double kOnWall = 2.0, kSame = 4.0;
     planning::FrontierChoice best;
-    for (const auto& d : planning::DoorwayHypotheses(view, kOnWall, options_.doorway_min_width, options_.doorway_max_width)) {
+    const double min_width = options_.doorway_min_width, max_width = options_.doorway_max_width;
+    for (const auto& d : planning::DoorwayHypotheses(view, kOnWall, min_width, max_width)) {
       bool failed = false;
       for (const auto& f : failed_doorways_) failed = failed || core::Distance(f, d.middle()) < kSame;
       if (failed) continue;
-      const planning::Path p = planning::VisibilityGraph(planning::WithDoorway(view, d), planning_, false).Plan(at, goal_);
+      const planning::Path p =
+          planning::VisibilityGraph(planning::WithDoorway(view, d), planning_, false).Plan(at, goal_);
       if (!p || (best.status == planning::PlanStatus::kFound && p.cost >= best.path.cost)) continue;
       best = {planning::PlanStatus::kFound, -1, p};
       doorway_ = d.middle();
     }
     return best;
-  }
-
-  // True if the frontier lies wholly where the agent was stuck at given-up ones.
-  bool Covered(const std::vector<mapping::Frontier>& frontiers, int id) const {
-    for (const auto& f : frontiers)
-      if (f.id == id) return blocked_.Covers(f);
-    return false;
   }
 
   bool End(const char* reason) {
@@ -193,6 +208,7 @@ class NavigationPolicy : public AgentPolicy {
   std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
   planning::GivenUpFrontiers blocked_;
+  std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   double block_reach_;
   planning::SuspectInspector inspector_;
   std::optional<Vec2> doorway_;        // the middle of the doorway hypothesis the agent heads through now
@@ -240,7 +256,8 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   r.reached = r.end_reason == "goal";
   r.steps = loop.steps;
   r.distance = loop.distance.at(0);
-  r.shortest = core::PolylineLength(sim::FreePath(world, world.start.position(), world.goal, config.lsp.clearance, config.lsp.cell));
+  r.shortest = core::PolylineLength(
+      sim::FreePath(world, world.start.position(), world.goal, config.lsp.clearance, config.lsp.cell));
   r.nudges = policy.nudges();
   r.path = loop.paths.at(0);
   r.frontier_ps = policy.estimates();

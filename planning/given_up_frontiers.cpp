@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace toponav::planning {
 
@@ -40,18 +41,92 @@ bool ClipToDisc(const Vec2& a, const Vec2& b, const Vec2& c, double radius, core
   const double bq = 2 * core::Dot(f, d), cq = core::Dot(f, f) - radius * radius;
   const double disc = bq * bq - 4 * dd * cq;
   if (disc < 0) return false;
-  const double t0 = std::max(0.0, (-bq - std::sqrt(disc)) / (2 * dd)), t1 = std::min(1.0, (-bq + std::sqrt(disc)) / (2 * dd));
+  const double t0 = std::max(0.0, (-bq - std::sqrt(disc)) / (2 * dd));
+  const double t1 = std::min(1.0, (-bq + std::sqrt(disc)) / (2 * dd));
   if (t0 > t1) return false;
   *out = {a + d * t0, a + d * t1};
   return true;
 }
 
+// The part of 'polyline' between arc lengths s0 < s1.
+std::vector<Vec2> SubPolyline(const std::vector<Vec2>& polyline, double s0, double s1) {
+  std::vector<Vec2> out;
+  double s = 0;
+  for (size_t i = 1; i < polyline.size(); ++i) {
+    const Vec2 a = polyline[i - 1], b = polyline[i];
+    const double len = core::Distance(a, b), next = s + len;
+    if (len > 1e-12 && next > s0 && s < s1) {
+      const auto at = [&](double t) { return a + (b - a) * ((std::clamp(t, s, next) - s) / len); };
+      if (out.empty()) out.push_back(at(s0));
+      out.push_back(at(s1));
+    }
+    s = next;
+  }
+  return out;
+}
+
+// The point at arc length s along 'polyline' (2 points or more).
+Vec2 PointAt(const std::vector<Vec2>& polyline, double s) {
+  for (size_t i = 1; i < polyline.size(); ++i) {
+    const double len = core::Distance(polyline[i - 1], polyline[i]);
+    if (s <= len && len > 1e-12) return polyline[i - 1] + (polyline[i] - polyline[i - 1]) * (std::max(s, 0.0) / len);
+    s -= len;
+  }
+  return polyline.back();
+}
+
+// The longest run of 'f' whose sample points (every 'spacing' along it) lie 'reach' or more from 'edges', as arc
+// lengths [s0, s1]; s1 <= s0 when there is none.
+std::pair<double, double> LongestClearRun(const mapping::Frontier& f, const std::vector<core::Segment2>& edges,
+                                          double reach, double spacing) {
+  const double length = core::PolylineLength(f.points);
+  const int n = std::max(1, int(std::ceil(length / spacing)));
+  std::pair<double, double> best{0, -1};
+  double start = -1;
+  for (int k = 0; k <= n + 1; ++k) {
+    const double s = std::min(length, k * length / n);
+    const bool clear = k <= n && !Near(edges, PointAt(f.points, s), reach);
+    if (clear && start < 0) start = s;
+    if (!clear && start >= 0) {
+      const double end = std::min(length, (k - 1) * length / n);
+      if (end - start > best.second - best.first) best = {start, end};
+      start = -1;
+    }
+  }
+  return best;
+}
+
 }  // namespace
+
+std::vector<mapping::Frontier> GivenUpFrontiers::Unprobed(const std::vector<mapping::Frontier>& frontiers) const {
+  std::vector<mapping::Frontier> out;
+  for (const auto& f : frontiers) {
+    if (f.points.size() < 2 || edges_.empty()) {
+      out.push_back(f);
+      continue;
+    }
+    const double length = core::PolylineLength(f.points);
+    const auto [s0, s1] = LongestClearRun(f, edges_, reach_, kUnprobedSpacing);
+    if (s1 - s0 >= length - 1e-9) {
+      out.push_back(f);  // nothing probed near it
+    } else if (s1 > s0) {
+      mapping::Frontier piece = f;
+      piece.points = SubPolyline(f.points, s0, s1);
+      piece.length = s1 - s0;
+      piece.midpoint = PointAt(f.points, 0.5 * (s0 + s1));
+      if (s0 > 0) piece.front_turn = 0.0;  // a cut end is bounded (by the probed part, a wall to the planners)
+      if (s1 < length) piece.back_turn = 0.0;
+      out.push_back(std::move(piece));
+    }
+  }
+  return out;
+}
 
 void GivenUpFrontiers::AddPieces(const mapping::Frontier& f, const Vec2* probed_at) {
   for (const auto& e : Edges(f.points)) {
     core::Segment2 piece = e;
-    if (!probed_at || probe_radius_ <= 0 || ClipToDisc(e.a, e.b, *probed_at, probe_radius_, &piece)) edges_.push_back(piece);
+    if (!probed_at || probe_radius_ <= 0 || ClipToDisc(e.a, e.b, *probed_at, probe_radius_, &piece))
+      edges_.push_back(piece);
   }
 }
 
@@ -64,8 +139,6 @@ void GivenUpFrontiers::GiveUp(int id, const std::vector<mapping::Frontier>& fron
     AddPieces(f, probed_at);
   }
 }
-
-bool GivenUpFrontiers::Covers(const mapping::Frontier& f) const { return LiesOn(edges_, f, reach_); }
 
 std::vector<int> GivenUpFrontiers::Update(const std::vector<mapping::Frontier>& frontiers) {
   std::vector<int> back;

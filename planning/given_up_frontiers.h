@@ -19,6 +19,8 @@ namespace toponav::planning {
 
 class GivenUpFrontiers {
  public:
+  static constexpr double kUnprobedSpacing = 0.5;  // Unprobed's sampling step along a frontier, world units
+
   explicit GivenUpFrontiers(double reach, double probe_radius = 0.0) : reach_(reach), probe_radius_(probe_radius) {}
   // Gives up frontier 'id' (again: one more probed part); its polyline is taken from 'frontiers' if it is there.
   void GiveUp(int id, const std::vector<mapping::Frontier>& frontiers, const core::Vec2* probed_at = nullptr);
@@ -26,8 +28,14 @@ class GivenUpFrontiers {
   // returns the ids taken back.
   std::vector<int> Update(const std::vector<mapping::Frontier>& frontiers);
   bool Contains(int id) const { return ids_.count(id) > 0; }
-  // True if 'f' (its middle and ends) lies within 'reach' of where given-up frontiers were probed.
-  bool Covers(const mapping::Frontier& f) const;
+  // 'frontiers' with their parts within 'reach' of where given-up ones were probed cut away: a frontier probed
+  // in part keeps its longest other piece (its id; points, midpoint and length those of the piece; a cut end
+  // counts as a true end, front_turn / back_turn 0), one with no other piece is dropped, the others are as
+  // they were.  Clearance is sampled every kUnprobedSpacing world units along a frontier: a piece's ends lie
+  // up to that far inside its clear part, and clear parts shorter than that are dropped.  A target at the
+  // piece's middle leads an agent to the part of a long frontier along an unmapped wall that it has not
+  // pressed at yet.
+  std::vector<mapping::Frontier> Unprobed(const std::vector<mapping::Frontier>& frontiers) const;
   // Takes every frontier back (they were guesses: a goal-directed agent whose map is sealed retries them).
   void Clear() { *this = GivenUpFrontiers(reach_, probe_radius_); }
   int given_up() const { return given_up_; }  // frontiers given up with GiveUp (not counting re-created ones)

@@ -39,6 +39,11 @@ bool MotionBlocks::Record(int agent, const std::vector<Vec2>& path, const Vec2& 
   return true;
 }
 
+void MotionBlocks::Clear() {
+  blocks_.clear();
+  std::fill(count_.begin(), count_.end(), 0);
+}
+
 mapping::MapView MotionBlocks::With(const mapping::MapView& view) const {
   mapping::MapView out = view;
   for (const auto& block : blocks_) AddFreeStandingWall(&out, block);

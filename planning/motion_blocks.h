@@ -1,6 +1,7 @@
 #pragma once
 // Where an agent's steps make no headway along its planned path, the map lacks something the agent runs into
-// (a building side whose corners the posterior rejects, so the path cuts through the building): local
+// (a building side whose corners the posterior rejects, so the path cuts through the building; a maze wall
+// seen only edge-on, inside known space): local
 // avoidance slides it along the real wall half a unit a step, or not at all, for as long as the plan says
 // "straight on".  MotionBlocks notes such places from the agent's own motion (no sensing) and gives the
 // planners a short wall across the way the agent was heading there, so the next plan goes round.
@@ -21,6 +22,9 @@ class MotionBlocks {
   // step added a block.
   bool Record(int agent, const std::vector<core::Vec2>& path, const core::Vec2& before, const core::Vec2& after);
   const std::vector<core::Segment2>& blocks() const { return blocks_; }
+  // Every block taken back, and the counts of steps without headway restarted (a goal-directed agent whose map
+  // is sealed retries).
+  void Clear();
   // 'view' with every block as a free-standing wall (AddFreeStandingWall), so plans go round its ends.
   mapping::MapView With(const mapping::MapView& view) const;
 

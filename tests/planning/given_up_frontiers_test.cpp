@@ -48,7 +48,8 @@ TEST(GivenUpFrontiers, OnlyThePartProbedOfALongFrontierStaysGivenUpByPlace) {
   GivenUpFrontiers middle(3.0, 20.0);
   const core::Vec2 at_middle{1, 50};
   middle.GiveUp(4, {MakeFrontier(4, {{0, 0}, {0, 100}})}, &at_middle);
-  middle.Update({MakeFrontier(7, {{0, 35}, {0, 65}}), MakeFrontier(8, {{0, 5}, {0, 25}}), MakeFrontier(9, {{0, 75}, {0, 95}})});
+  middle.Update({MakeFrontier(7, {{0, 35}, {0, 65}}), MakeFrontier(8, {{0, 5}, {0, 25}}),
+                 MakeFrontier(9, {{0, 75}, {0, 95}})});
   EXPECT_TRUE(middle.Contains(7));
   EXPECT_FALSE(middle.Contains(8));
   EXPECT_FALSE(middle.Contains(9));
@@ -72,17 +73,47 @@ TEST(GivenUpFrontiers, AFrontierGivenUpWhereAgentsStoodRecordsOnlyThePartNearTha
   EXPECT_NEAR(g.probed()[0].b.y, 50.0 + std::sqrt(399.0), 1e-9);
 }
 
-TEST(GivenUpFrontiers, AFrontierIsCoveredOnlyWhereItLiesWhollyOnProbedParts) {
-  // Given up where the agent stood at (1, 50): the long frontier itself is not covered (its ends lie beyond
-  // the probed part, where an opening may be), a piece near the probe is.
+TEST(GivenUpFrontiers, AFrontierProbedInPartKeepsItsLongestOtherPiece) {
+  // Given up where the agent stood at (1, 40): the part of the long frontier within 20 of it was probed, and
+  // the frontier keeps its longer other piece (from 3 past the probed part, y 63, to its end at y 100); a
+  // frontier lying wholly near the probed part is dropped, one far from it is as it was.
   GivenUpFrontiers g(3.0, 20.0);
-  const core::Vec2 at{1, 50};
-  const mapping::Frontier along = MakeFrontier(4, {{0, 0}, {0, 100}});
+  const core::Vec2 at{1, 40};
+  mapping::Frontier along = MakeFrontier(4, {{0, 0}, {0, 100}});
+  along.front_turn = along.back_turn = 0.3;  // both ends where the chain was cut at a gentle turn
   g.GiveUp(4, {along}, &at);
-  EXPECT_TRUE(g.Contains(4));
-  EXPECT_FALSE(g.Covers(along));
-  EXPECT_TRUE(g.Covers(MakeFrontier(6, {{1, 40}, {1, 60}})));
-  EXPECT_FALSE(g.Covers(MakeFrontier(7, {{0, 60}, {0, 80}}))) << "reaches past the probed part";
+  const mapping::Frontier far = MakeFrontier(7, {{20, 0}, {20, 100}});
+  const std::vector<mapping::Frontier> cut = g.Unprobed({along, MakeFrontier(6, {{1, 25}, {1, 55}}), far});
+  ASSERT_EQ(cut.size(), 2u);
+  EXPECT_EQ(cut[0].id, 4);
+  ASSERT_EQ(cut[0].points.size(), 2u);
+  EXPECT_NEAR(cut[0].points.front().y, 40.0 + std::sqrt(399.0) + 3.0, GivenUpFrontiers::kUnprobedSpacing);
+  EXPECT_NEAR(cut[0].points.back().y, 100.0, 1e-9);
+  EXPECT_NEAR(cut[0].length, cut[0].points.back().y - cut[0].points.front().y, 1e-9);
+  EXPECT_NEAR(cut[0].midpoint.y, 0.5 * (cut[0].points.front().y + 100.0), 1e-9);
+  EXPECT_EQ(cut[0].front_turn, 0.0) << "the cut end is a true end";
+  EXPECT_EQ(cut[0].back_turn, 0.3) << "the other end is as it was";
+  EXPECT_EQ(cut[1].id, 7);
+  EXPECT_EQ(cut[1].points.size(), far.points.size());
+  EXPECT_EQ(cut[1].midpoint.y, far.midpoint.y);
+}
+
+TEST(GivenUpFrontiers, APieceOfABentFrontierKeepsItsCorner) {
+  // Probed near its start at (1, 10): the part up to 20 from there is cut, 3 more, and the piece runs from
+  // (0, 33) round the corner at (0, 50) to the end at (50, 50).
+  GivenUpFrontiers g(3.0, 20.0);
+  const core::Vec2 at{1, 10};
+  const mapping::Frontier bent = MakeFrontier(4, {{0, 0}, {0, 50}, {0, 50}, {50, 50}});  // a repeated point
+  g.GiveUp(4, {bent}, &at);
+  const std::vector<mapping::Frontier> cut = g.Unprobed({bent});
+  ASSERT_EQ(cut.size(), 1u);
+  ASSERT_EQ(cut[0].points.size(), 3u);
+  EXPECT_NEAR(cut[0].points[0].y, 10.0 + std::sqrt(399.0) + 3.0, GivenUpFrontiers::kUnprobedSpacing);
+  EXPECT_EQ(cut[0].points[1].y, 50.0);
+  EXPECT_EQ(cut[0].points[2].x, 50.0);
+  EXPECT_NEAR(cut[0].length, 50.0 - cut[0].points[0].y + 50.0, 1e-9);
+  EXPECT_EQ(cut[0].midpoint.y, 50.0) << "halfway along the piece: past its corner";
+  EXPECT_NEAR(cut[0].midpoint.x, cut[0].length / 2 - (50.0 - cut[0].points[0].y), 1e-9);
 }
 
 TEST(GivenUpFrontiers, AFrontierThatGrowsWellPastWhereItWasGivenUpIsTakenBackOnce) {
@@ -113,8 +144,11 @@ TEST(GivenUpFrontiers, GivingAFrontierUpAgainWhereTheAgentStoodElsewhereRecordsT
   g.GiveUp(4, {along}, &second);
   EXPECT_EQ(g.given_up(), 1) << "one frontier";
   ASSERT_EQ(g.probed().size(), 2u);
-  EXPECT_TRUE(g.Covers(MakeFrontier(6, {{1, 75}, {1, 85}}))) << "the second place is probed as well";
-  EXPECT_FALSE(g.Covers(MakeFrontier(7, {{1, 45}, {1, 55}}))) << "not the stretch between them";
+  const std::vector<mapping::Frontier> cut =
+      g.Unprobed({MakeFrontier(6, {{1, 75}, {1, 85}}), MakeFrontier(7, {{1, 45}, {1, 55}})});
+  ASSERT_EQ(cut.size(), 1u) << "the second place is probed as well";
+  EXPECT_EQ(cut[0].id, 7) << "not the stretch between them";
+  EXPECT_EQ(cut[0].points.front().y, 45.0) << "as it was";
 }
 
 TEST(GivenUpFrontiers, ClearTakesEveryFrontierBack) {
