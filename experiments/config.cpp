@@ -95,6 +95,13 @@ sim::MotionOptions MotionFor(const Config& config, const core::World& world) {
   return m;
 }
 
+std::optional<planning::MotionBlocks> MotionBlocksFor(const Config& config, const core::World& world,
+                                                      int num_agents) {
+  if (!config.search.block_when_stuck) return std::nullopt;
+  const double step = MotionFor(config, world).step_length;
+  return planning::MotionBlocks(num_agents, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
+}
+
 SensorConfig SensorFor(const Config& config, const core::World& world) {
   SensorConfig s = config.sensor;
   if (world.has_boundary()) return s;

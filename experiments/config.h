@@ -3,6 +3,7 @@
 // wrong types and out-of-range values are core::ConfigError naming the file, the key path and the value) and
 // happens only here, at the edge; the rest of the program sees plain option structs.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "learning/train_options.h"
 #include "mapping/mapping.h"
 #include "planning/lsp_planner.h"
+#include "planning/motion_blocks.h"
 #include "planning/navigation.h"
 #include "sim/motion.h"
 #include "sim/render.h"
@@ -148,6 +150,9 @@ struct Config {
 
 // The motion options agents use in 'world' (open worlds take open_world.step_length): derived once, here.
 sim::MotionOptions MotionFor(const Config& config, const core::World& world);
+// The motion blocks for 'num_agents' agents in 'world' (planning::MotionBlocks: a short wall across an agent's way
+// where it makes no headway for search.stuck_steps steps); none unless search.block_when_stuck.
+std::optional<planning::MotionBlocks> MotionBlocksFor(const Config& config, const core::World& world, int num_agents);
 // The sensor that observes 'world' (open worlds take open_world.sub_bin and sigma_bearing): derived once, here.
 SensorConfig SensorFor(const Config& config, const core::World& world);
 

@@ -90,13 +90,9 @@ class NavigationPolicy : public AgentPolicy {
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
+        blocks_(MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
-        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {
-    if (config.search.block_when_stuck) {
-      const double step = MotionFor(config, world).step_length;
-      blocks_.emplace(1, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
-    }
-  }
+        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();

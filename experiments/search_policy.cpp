@@ -22,12 +22,9 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
       given_up_(config.search.give_up_reach, config.search.give_up_probe_radius),
       dwell_(config.search.give_up_steps, config.search.give_up_distance),
       commitment_(num_agents, config.search.switch_ratio, config.search.switch_margin),
-      stuck_(num_agents, config.search.stuck_steps, MotionFor(config, world).step_length) {
+      stuck_(num_agents, config.search.stuck_steps, MotionFor(config, world).step_length),
+      blocks_(MotionBlocksFor(config, world, num_agents)) {
   if (!world.has_boundary()) region_ = world.bounds;
-  if (config.search.block_when_stuck) {
-    const double step = MotionFor(config, world).step_length;
-    blocks_.emplace(num_agents, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
-  }
   planning::VertexInspectionOptions inspection;
   inspection.max_bend = config.search.inspect_bend;
   inspection.standoff = config.search.inspect_standoff;
