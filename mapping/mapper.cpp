@@ -13,6 +13,7 @@
 #include "mapping/internal/mcmc.h"
 #include "mapping/internal/posterior.h"
 #include "mapping/internal/stars.h"
+#include "mapping/internal/walls_past_vertices.h"
 #include "mapping/mapping.h"
 
 namespace toponav::mapping {
@@ -48,6 +49,7 @@ const core::OptionFields<MapperOptions>& MapperOptions::Fields() {
       {"wall_skip_damping", &O::wall_skip_damping, 0.0, 1.0},
       {"wall_min_view_angle", &O::wall_min_view_angle, 0.0, 1.0},
       {"wall_on_segment_tolerance", &O::wall_on_segment_tolerance, 0.0, 100.0},
+      {"wall_past_vertex_tolerance", &O::wall_past_vertex_tolerance, 0.0, 100.0},
       {"wall_past_detection_min", &O::wall_past_detection_min},
       {"wall_evidence_min", &O::wall_evidence_min},
       {"edge_log_floor", &O::edge_log_floor, -100.0, -1e-6},
@@ -139,7 +141,10 @@ void Mapper::Impl::Add(const core::Observation& z) {
 
 MapView Mapper::Impl::MakeView(double tolerance) {
   internal::RefreshStars(&core, tolerance);
-  const internal::MapState& ms = ViewMap();
+  internal::MapState drawn;
+  const double past = core.o.wall_past_vertex_tolerance;
+  if (past > 0) drawn = internal::WithoutWallsPastVertices(core, ViewMap(), past);
+  const internal::MapState& ms = past > 0 ? drawn : ViewMap();
   known.Update(core, ms, tolerance);
   MapView view;
   for (size_t i = 0; i < core.vertices.size(); ++i) {

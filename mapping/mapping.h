@@ -34,6 +34,10 @@ struct MapperOptions {
   double wall_on_segment_tolerance = 2.0;  // ... not counting detections within this distance of the segment
                                           // between them whose vertex is not in the map (a false detection on
                                           // the wall); 0: count all (the reference)
+  // Of a map wall a-b and a map wall a-c passing within this distance (world units) of b and ending more than
+  // twice this past it, the planners and known space get a-b only (mapping/internal/walls_past_vertices.h);
+  // 0: both.
+  double wall_past_vertex_tolerance = 0.0;
   // Closed worlds: the evidence such a pair (a detection on the segment between them) gives for a wall
   // straight past the detection is the smaller of its ends' wall likelihoods (both ends must say a wall runs
   // on) if true, their average (the reference) if false.  (README, "The map", says why.)

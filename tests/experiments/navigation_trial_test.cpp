@@ -167,5 +167,22 @@ TEST(NavigationTrial, AnAgentMakingNoHeadwayAtAWallTheMapLacksInKnownSpaceGoesRo
   EXPECT_FALSE(without.reached) << "without the blocks the agent still presses at the wall";
 }
 
+TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) {
+  // Tuning maze 7249, the oracle: a corner detected past the end of the column's side wall, seen edge-on, was
+  // joined to the wall's far end, and the wall drawn along the side wall and across the opening beyond its end
+  // closed the only way to the goal (every frontier's true Ps 0; the run ended at the 600-step cap).  The
+  // maze configs draw only the shorter wall (mapping.wall_past_vertex_tolerance).
+  Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
+  ASSERT_GT(cfg.mapping.wall_past_vertex_tolerance, 0.0);
+  const core::World world = sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7249);
+  NavigationTrialOptions o;
+  o.planner = GoalPlanner::kOracle;
+  o.max_steps = 200;  // it reaches the goal after 182
+  const NavigationResult r = RunNavigationTrial(world, cfg, o, 7249);
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  cfg.mapping.wall_past_vertex_tolerance = 0;
+  EXPECT_FALSE(RunNavigationTrial(world, cfg, o, 7249).reached) << "with both walls drawn the way stays closed";
+}
+
 }  // namespace
 }  // namespace toponav::experiments

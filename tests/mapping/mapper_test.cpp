@@ -72,6 +72,34 @@ bool HasWall(const MapView& view, Vec2 a, Vec2 b) {
   return false;
 }
 
+// A wall's end B = (2, 20) seen edge-on from (0, 0), with a vertex C detected just past it: from there C comes
+// before B in bearing, so the evidence joins A = (2, -20) and C straight past B; from (-10, 0) B comes first.
+MapView WallAndAVertexPastItsEnd(double past_vertex_tolerance) {
+  MapperOptions o;
+  o.world_bounds = core::Aabb2{{-20, -30}, {20, 40}};
+  o.defer_to_mcmc = false;
+  o.wall_past_vertex_tolerance = past_vertex_tolerance;
+  Mapper m(o);
+  for (int i = 0; i < 8; ++i) {
+    const core::Pose2 pose{i % 2 ? -10.0 : 0.0, 0.0, 0.0};
+    std::vector<Detection> d;
+    for (Vec2 p : {Vec2{2, -20}, Vec2{2, 20}, Vec2{3, 26}}) d.push_back(Det(pose, p, core::VertexLabel::kCorner));
+    m.AddObservation(Obs(pose, d));
+  }
+  return m.View();
+}
+
+TEST(Mapper, OfTwoWallsFromACornerTheOnePassingTheOthersEndIsNotDrawnWhenAsked) {
+  const MapView both = WallAndAVertexPastItsEnd(0.0);
+  ASSERT_EQ(both.vertices.size(), 3u);
+  EXPECT_TRUE(HasWall(both, {2, -20}, {3, 26}));
+  const MapView drawn = WallAndAVertexPastItsEnd(2.0);
+  EXPECT_FALSE(HasWall(drawn, {2, -20}, {3, 26})) << "it runs within 0.9 of the wall's end (2, 20)";
+  EXPECT_TRUE(HasWall(drawn, {2, -20}, {2, 20}));
+  EXPECT_TRUE(HasWall(drawn, {2, 20}, {3, 26}));
+  EXPECT_EQ(drawn.walls.size(), both.walls.size() - 1);
+}
+
 TEST(Mapper, FalseDetectionsOnAWallDoNotHideIt) {
   const MapView view = SquareWithFalseDetectionsOnAWall(2.0);
   EXPECT_EQ(view.vertices.size(), 4u);
