@@ -72,6 +72,14 @@ double DistanceToSegment(const Vec2& p, const Segment2& s) {
   return Distance(p, s.a + d * t);
 }
 
+bool NearSegmentInterior(const Vec2& p, const Segment2& s, double tolerance) {
+  const Vec2 d = s.b - s.a;
+  const double len2 = Dot(d, d);
+  if (len2 < 1e-12) return false;
+  const double t = Dot(p - s.a, d) / len2;
+  return t > 0 && t < 1 && std::abs(Cross(d, p - s.a)) < tolerance * std::sqrt(len2);
+}
+
 double DistanceToRing(const Vec2& p, const Ring& ring) {
   double best = std::numeric_limits<double>::infinity();
   for (size_t i = 0, n = ring.size(); i < n; ++i)

@@ -83,6 +83,9 @@ Aabb2 Bounds(const std::vector<Vec2>& points, const Aabb2& start);
 double PolylineLength(const std::vector<Vec2>& points);  // summed segment lengths (0 for fewer than 2 points)
 
 double DistanceToSegment(const Vec2& p, const Segment2& s);
+// True if p projects strictly between s.a and s.b and lies less than 'tolerance' from the line through them
+// (false for a segment of zero length).
+bool NearSegmentInterior(const Vec2& p, const Segment2& s, double tolerance);
 double DistanceToRing(const Vec2& p, const Ring& ring);  // to the boundary
 bool NearRing(const Vec2& p, const Ring& ring, double tol);  // DistanceToRing(p, ring) < tol, faster
 double SegmentDistance(const Segment2& s, const Segment2& t);

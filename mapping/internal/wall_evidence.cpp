@@ -8,11 +8,7 @@ namespace toponav::mapping::internal {
 using core::Vec2;
 
 bool WallEvidence::OnSegment(const Vec2& p, const Vec2& a, const Vec2& b) const {
-  const Vec2 d = b - a;
-  const double len2 = core::Dot(d, d);
-  if (o_.wall_on_segment_tolerance <= 0 || len2 < 1e-12) return false;
-  const double t = core::Dot(p - a, d) / len2;
-  return t > 0 && t < 1 && std::abs(core::Cross(d, p - a)) / std::sqrt(len2) < o_.wall_on_segment_tolerance;
+  return o_.wall_on_segment_tolerance > 0 && core::NearSegmentInterior(p, {a, b}, o_.wall_on_segment_tolerance);
 }
 
 // Every pair less than pi apart, R = i and L = j counter-clockwise of it; each detection between them scales

@@ -66,6 +66,16 @@ TEST(Geometry, NearRingAgreesWithDistanceToRing) {
   EXPECT_GT(near, 100);
 }
 
+TEST(Geometry, NearSegmentInteriorHoldsBesideTheSegmentAndNotPastItsEnds) {
+  const Segment2 s{{0, 0}, {10, 0}};
+  EXPECT_TRUE(NearSegmentInterior({5, 1.9}, s, 2.0));
+  EXPECT_TRUE(NearSegmentInterior({0.1, -1.9}, s, 2.0));
+  EXPECT_FALSE(NearSegmentInterior({5, 2.1}, s, 2.0));
+  EXPECT_FALSE(NearSegmentInterior({-0.1, 0}, s, 2.0));  // within 2 of the segment, but past its end
+  EXPECT_FALSE(NearSegmentInterior({10.5, 0.5}, s, 2.0));
+  EXPECT_FALSE(NearSegmentInterior({0, 0}, {{3, 3}, {3, 3}}, 2.0));
+}
+
 TEST(Geometry, PolylineLengthSumsSegments) {
   EXPECT_EQ(PolylineLength({}), 0.0);
   EXPECT_EQ(PolylineLength({{1, 1}}), 0.0);
