@@ -2,8 +2,6 @@
 
 namespace toponav::mapping::internal {
 
-using core::Vec2;
-
 namespace {
 
 // True if a map vertex b joined to 'a' by a map wall (other than a-c) lies within 'tolerance' of the inside
@@ -22,13 +20,12 @@ bool PassesNeighbour(const MapCore& m, const MapState& ms, int a, int c, double 
 
 MapState WithoutWallsPastVertices(const MapCore& m, const MapState& ms, double tolerance) {
   MapState out = ms;
-  out.walls.clear();
-  out.wall_keys.clear();
+  out.walls.clear();  // refilled below; the few walls left out also leave wall_keys
   for (const auto& w : ms.walls) {
     if (PassesNeighbour(m, ms, w.first, w.second, tolerance) || PassesNeighbour(m, ms, w.second, w.first, tolerance))
-      continue;
-    out.walls.push_back(w);
-    out.wall_keys.insert(WallKey(w.first, w.second));
+      out.wall_keys.erase(WallKey(w.first, w.second));
+    else
+      out.walls.push_back(w);
   }
   return out;
 }
