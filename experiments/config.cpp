@@ -42,7 +42,13 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
   return fields;
 }
 
-void SearchOptions::Validate() const { core::CheckRanges(*this, Fields(), "search."); }
+void SearchOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "search.");
+  if (exploration_estimate != "none" && exploration_estimate != "oracle")
+    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate, "expected none or oracle");
+  if (exploration_estimate != "none" && !tour)
+    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate, "only the tour uses it: set search.tour");
+}
 
 const core::OptionFields<NavigationOptions>& NavigationOptions::Fields() {
   using O = NavigationOptions;
@@ -208,6 +214,12 @@ void ReadSensor(YamlSection s, SensorConfig* sensor) {
   s.Finish();  // keys of another kind are unknown here
 }
 
+void ReadSearch(YamlSection s, SearchOptions* search) {
+  s.Read("exploration_estimate", &search->exploration_estimate);
+  s.ReadFields(search, SearchOptions::Fields());
+  s.Finish();
+}
+
 void ReadBench(YamlSection b, BenchOptions* bench) {
   b.Read("name", &bench->name);
   for (YamlSection row : b.Sequence("rows")) {
@@ -304,7 +316,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadSensor(top.Section("sensor"), &c.sensor);
   ReadSection(top.Section("mapping"), &c.mapping);
   ReadSection(top.Section("planning"), &c.planning);
-  ReadSection(top.Section("search"), &c.search);
+  ReadSearch(top.Section("search"), &c.search);
   ReadSection(top.Section("navigation"), &c.navigation);
   ReadSection(top.Section("lsp"), &c.lsp);
   ReadSection(top.Section("open_world"), &c.open_world);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "planning/frontier_exploration.h"
+
 namespace toponav::experiments {
 
 using core::Vec2;
@@ -23,8 +25,12 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
       dwell_(config.search.give_up_steps, config.search.give_up_distance),
       commitment_(num_agents, config.search.switch_ratio, config.search.switch_margin),
       stuck_(num_agents, config.search.stuck_steps, MotionFor(config, world).step_length),
-      blocks_(MotionBlocksFor(config, world, num_agents)) {
+      blocks_(MotionBlocksFor(config, world, num_agents)),
+      cell_(config.lsp.cell),
+      bounds_(world.bounds) {
   if (!world.has_boundary()) region_ = world.bounds;
+  if (num_agents == 1 && config.search.exploration_estimate == "oracle")
+    exploration_ = planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance);
   planning::VertexInspectionOptions inspection;
   inspection.max_bend = config.search.inspect_bend;
   inspection.standoff = config.search.inspect_standoff;
@@ -96,6 +102,7 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   const planning::VisibilityGraph graph(planned, planning_, false);
   planning::PlanningProblem problem{&planned, &graph, &targets_, {}, std::nullopt};
   for (const auto& p : state.poses) problem.agents.push_back(p.position());
+  if (exploration_) planning::EstimateExploration(view, problem.agents[0], cell_, bounds_, *exploration_, &targets_);
   if (targets_.empty() && inspector_) {
     // A lookout the agents cannot reach and look from within the steps left is not worth starting for.
     targets_ = inspector_->Targets(view, graph, problem.agents, PathBudget(state, search_.give_up_steps));

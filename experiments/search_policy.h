@@ -11,6 +11,8 @@
 // search.inspect_bend and search.inspect_unwalled, once no frontier is left agents look from close by at the
 // map vertices that walls run straight through and (open worlds) those the map lacks walls for
 // (planning::VertexInspector) before the search ends, those they can reach and look from within the steps left.
+// With search.exploration_estimate, one agent's tour knows what lies past each frontier
+// (planning/frontier_exploration.h).
 #include <functional>
 #include <memory>
 #include <optional>
@@ -19,6 +21,7 @@
 
 #include "experiments/agent_loop.h"
 #include "planning/given_up_frontiers.h"
+#include "planning/lsp_planner.h"
 #include "planning/motion_blocks.h"
 #include "planning/planner.h"
 #include "planning/search_policy.h"
@@ -60,6 +63,9 @@ class SearchPolicy : public AgentPolicy {
   planning::StuckMonitor stuck_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   std::optional<planning::VertexInspector> inspector_;  // search.inspect_bend or inspect_unwalled only
+  std::unique_ptr<planning::SubgoalEstimator> exploration_;  // search.exploration_estimate, one agent only
+  double cell_ = 1.0;                                         // its raster's cell (lsp.cell)
+  core::Aabb2 bounds_;                                        // the world's
   // This step's targets (pushed through where agents dwelt, and as they were before) and choices.
   std::vector<planning::FrontierTarget> targets_, original_;
   std::vector<planning::FrontierChoice> choices_;

@@ -81,6 +81,8 @@ struct FrontierTarget {
   double length = 0.0;
   core::Vec2 outward{1, 0};  // unit normal of the frontier at its midpoint, pointing into unknown space
   double depth = 0.0;        // how far 'point' lies back from the frontier, against 'outward'
+  double exploration = 0.0;  // estimated cost of exploring past it and coming back (path units; 0: none),
+                             // planning/frontier_exploration.h
 };
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options);
 // True if 'frontier' is straight with no stretch longer than PlannerOptions::frontier_row_gap between detected
