@@ -77,7 +77,8 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   LoopResult r;
   r.mapper = std::make_unique<mapping::Mapper>(MapperOptionsFor(world, config, o));
   mapping::Mapper& mapper = *r.mapper;
-  auto sensor = CreateSensor(SensorFor(config, world), {&world, config.render, o.goal, core::DeriveSeed(seed, 1)});
+  auto sensor = CreateSensor(SensorFor(config, world),
+                             {&world, config.render, o.goal, core::DeriveSeed(seed, 1), o.goal_at_agent});
   core::Rng rng(core::DeriveSeed(seed, 2));
   const sim::MotionOptions motion_options = MotionFor(config, world);
   sim::MotionSim motion(world, motion_options);

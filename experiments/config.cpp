@@ -44,10 +44,12 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
 
 void SearchOptions::Validate() const {
   core::CheckRanges(*this, Fields(), "search.");
-  if (exploration_estimate != "none" && exploration_estimate != "oracle")
-    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate, "expected none or oracle");
+  if (exploration_estimate != "none" && exploration_estimate != "learned" && exploration_estimate != "oracle")
+    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate,
+                            "expected none, learned or oracle");
   if (exploration_estimate != "none" && !tour)
-    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate, "only the tour uses it: set search.tour");
+    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate,
+                            "only the tour uses it: set search.tour");
 }
 
 const core::OptionFields<NavigationOptions>& NavigationOptions::Fields() {
@@ -120,6 +122,9 @@ namespace {
 
 // Rules that tie keys of different sections together (each names the key to change).
 void ValidateAcrossSections(const Config& c) {
+  if (c.search.exploration_estimate == "learned" && c.sensor.kind != SensorKind::kLearned)
+    throw core::ConfigError(c.source, "search.exploration_estimate", "learned",
+                            "needs sensor.kind learned (a subgoal model: train.subgoal)");
   // A split must not cut a frontier into pieces the planner ignores (an opening would vanish).
   if (c.mapping.frontier_split_min_length < c.planning.frontier_min_length)
     throw core::ConfigError(
@@ -205,6 +210,7 @@ void ReadSensor(YamlSection s, SensorConfig* sensor) {
   if (sensor->kind == SensorKind::kNoisy) s.ReadFields(&sensor->noisy, sim::NoisySensorOptions::Fields());
   if (sensor->kind == SensorKind::kLearned || sensor->kind == SensorKind::kRecorded) {
     s.Read("model", &sensor->learned.model);
+    s.Read("subgoal_model", &sensor->learned.subgoal_model);
     s.ReadFields(&sensor->learned, LearnedSensorOptions::Fields());
   }
   if (sensor->kind == SensorKind::kRecorded) {
@@ -270,6 +276,14 @@ void ReadDatagen(YamlSection d, DatagenOptions* o) {
   d.Finish();
 }
 
+void ReadSubgoalData(YamlSection s, SubgoalDataOptions* o) {
+  std::string kind = core::ToString(o->kind);
+  s.Read("kind", &kind);
+  o->kind = ReadWorldKind(s, "kind", kind);
+  s.ReadFields(o, SubgoalDataOptions::Fields());
+  s.Finish();
+}
+
 void ReadTrain(YamlSection t, learning::TrainOptions* o) {
   t.Read("init_from", &o->init_from);
   t.ReadFields(o, learning::TrainOptions::Fields());
@@ -325,9 +339,10 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadDemo(top.Section("demo"), &c.demo);
   ReadDatagen(top.Section("datagen"), &c.datagen);
   ReadTrain(top.Section("train"), &c.train);
-  ReadSection(top.Section("subgoal_data"), &c.subgoal_data);
+  ReadSubgoalData(top.Section("subgoal_data"), &c.subgoal_data);
   top.Finish();
-  for (std::string* path : {&c.sensor.learned.model, &c.sensor.images, &c.sensor.poses, &c.train.init_from})
+  for (std::string* path : {&c.sensor.learned.model, &c.sensor.learned.subgoal_model, &c.sensor.images,
+                            &c.sensor.poses, &c.train.init_from})
     *path = FindFromConfig(*path, source);
   Validate(c);
   return c;

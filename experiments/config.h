@@ -90,8 +90,10 @@ struct SearchOptions {
                                   // rejected vertex with at least this many detections off every map wall
                                   // (planning::UnwalledVertices: a hollow building's corners); 0: off
   // What the tour (search.tour, one agent) knows of the space past each frontier
-  // (planning/frontier_exploration.h): "none" (every frontier alike) or "oracle" (the true world's
-  // exploration cost: an upper bound for an estimate, since it looks at the world)
+  // (planning/frontier_exploration.h): "none" (every frontier alike), "learned" (the exploration cost a
+  // subgoal network -- sensor.subgoal_model, or the sensor's model itself, trained with train.subgoal on
+  // searches -- gives the cells each frontier covers, averaged over the views that saw them) or "oracle"
+  // (the true world's: an upper bound for an estimate, since it looks at the world)
   std::string exploration_estimate = "none";
   static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)

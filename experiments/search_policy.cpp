@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/error.h"
 #include "planning/frontier_exploration.h"
 
 namespace toponav::experiments {
@@ -31,6 +32,12 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
   if (!world.has_boundary()) region_ = world.bounds;
   if (num_agents == 1 && config.search.exploration_estimate == "oracle")
     exploration_ = planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance);
+  if (num_agents == 1 && config.search.exploration_estimate == "learned") {
+    auto averaging = std::make_unique<planning::CellAveragingEstimator>();
+    cells_ = averaging.get();
+    exploration_ = std::move(averaging);
+    model_ = config.sensor.learned.model;
+  }
   planning::VertexInspectionOptions inspection;
   inspection.max_bend = config.search.inspect_bend;
   inspection.standoff = config.search.inspect_standoff;
@@ -39,6 +46,14 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
   inspection.reach = config.search.give_up_distance;
   inspection.looks = config.search.give_up_steps;
   if (inspection.max_bend > 0 || inspection.unwalled_detections > 0) inspector_.emplace(inspection);
+}
+
+void SearchPolicy::ObserveCells(const LoopState& state) {
+  const size_t before = cells_->observations();
+  for (const auto& z : *state.observations) cells_->Observe(z);
+  if (cells_->observations() == before && !state.observations->empty())
+    throw core::DataError(model_, "search.exploration_estimate learned: the model gives no subgoal outputs "
+                                  "(not trained with train.subgoal)");
 }
 
 std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapView& view) {
@@ -102,6 +117,7 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   const planning::VisibilityGraph graph(planned, planning_, false);
   planning::PlanningProblem problem{&planned, &graph, &targets_, {}, std::nullopt};
   for (const auto& p : state.poses) problem.agents.push_back(p.position());
+  if (cells_) ObserveCells(state);
   if (exploration_) planning::EstimateExploration(view, problem.agents[0], cell_, bounds_, *exploration_, &targets_);
   if (targets_.empty() && inspector_) {
     // A lookout the agents cannot reach and look from within the steps left is not worth starting for.
@@ -111,6 +127,7 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   choices_ = planner_->Plan(problem);
   commitment_.Apply(graph, targets_, problem.agents, &choices_);
   if (on_plan) on_plan(targets_, choices_);
+  if (on_targets) on_targets(state, targets_);
   if (Ended(targets_, view)) return false;
   CountDwelling(state, problem.agents);
   for (size_t a = 0; a < choices_.size(); ++a)

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "experiments/agent_loop.h"
+#include "planning/cell_estimator.h"
 #include "planning/given_up_frontiers.h"
 #include "planning/lsp_planner.h"
 #include "planning/motion_blocks.h"
@@ -39,6 +40,7 @@ class SearchPolicy : public AgentPolicy {
 
   // Called every step before agents move with the frontier targets on offer and each agent's choice (traces).
   std::function<void(const std::vector<planning::FrontierTarget>&, const std::vector<planning::FrontierChoice>&)> on_plan;
+  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_targets;  // the same
 
   bool explored() const { return explored_; }
   const std::string& end_reason() const { return end_reason_; }  // "explored", "unreachable", "step_cap"
@@ -52,6 +54,7 @@ class SearchPolicy : public AgentPolicy {
   std::vector<planning::FrontierTarget> Targets(const mapping::MapView& view);
   bool Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view);
   void CountDwelling(const LoopState& state, const std::vector<core::Vec2>& agents);
+  void ObserveCells(const LoopState& state);  // "learned": this step's network outputs to the estimator
 
   SearchOptions search_;
   planning::PlannerOptions planning_;
@@ -64,6 +67,8 @@ class SearchPolicy : public AgentPolicy {
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   std::optional<planning::VertexInspector> inspector_;  // search.inspect_bend or inspect_unwalled only
   std::unique_ptr<planning::SubgoalEstimator> exploration_;  // search.exploration_estimate, one agent only
+  planning::CellAveragingEstimator* cells_ = nullptr;        // "learned": exploration_, fed the observations
+  std::string model_;                                         // its sensor's model file (errors)
   double cell_ = 1.0;                                         // its raster's cell (lsp.cell)
   core::Aabb2 bounds_;                                        // the world's
   // This step's targets (pushed through where agents dwelt, and as they were before) and choices.

@@ -65,7 +65,7 @@ std::unique_ptr<core::VertexDetectorInterface> LearnedDetector(const LearnedSens
   decode.sigma_bearing = o.sigma_bearing;
   decode.sub_bin = o.sub_bin;
   learning::SelectBackend(false, o.threads);
-  return learning::CreateLearnedDetector(o.model, decode);
+  return learning::CreateLearnedDetector(o.model, decode, o.subgoal_model);
 }
 
 }  // namespace
@@ -76,7 +76,8 @@ std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& co
   switch (config.kind) {
     case SensorKind::kNoisy: return sim::CreateNoisyGroundTruthSensor(*setup.world, config.noisy, setup.seed);
     case SensorKind::kLearned:
-      return sim::CreateRenderingSensor(*setup.world, setup.render, LearnedDetector(config.learned), setup.goal);
+      return sim::CreateRenderingSensor(*setup.world, setup.render, LearnedDetector(config.learned), setup.goal,
+                                        setup.goal_at_agent);
     case SensorKind::kRecorded:
       return CreateRecordedSensor(ReadRecording(config.images, config.poses), LearnedDetector(config.learned));
   }

@@ -29,6 +29,8 @@ std::vector<std::string> SensorKindNames();
 // The learned sensor's keys (beside `kind: learned`).
 struct LearnedSensorOptions {
   std::string model;             // a model file written by `toponav train`
+  std::string subgoal_model;     // optional: a subgoal network (train.subgoal) whose outputs fill the cells
+                                 // where a goal is given, the vertices still coming from 'model'
   double threshold = 0.5;        // a vertex-map peak above this is a detection
   double sigma_range = 5.0;      // the covariance reported with each detection (world units, radians)
   double sigma_bearing = 0.125;
@@ -54,6 +56,7 @@ struct SensorSetup {
   sim::RenderOptions render;
   std::optional<core::Vec2> goal;
   uint64_t seed = 0;
+  bool goal_at_agent = false;  // without a goal: a goal-conditioned network is told the goal is at the agent
 };
 
 std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& config, const SensorSetup& setup);

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "experiments/navigation_trial.h"
+#include "experiments/trial.h"
 #include "sim/raycast.h"
 #include "sim/render.h"
 #include "sim/worlds.h"
@@ -14,28 +15,27 @@ constexpr double kSeenMargin = 1.8;  // a frontier cell this close to what the p
 
 }  // namespace
 
-std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& maze, const Config& config, uint64_t seed,
+std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& world, const Config& config, uint64_t seed,
                                                  int every, const core::RangeBearingGrid& grid) {
   TOPONAV_CHECK(every >= 1, "every " << every);
-  const sim::RayCaster rays(maze);
-  const planning::TrueFreeSpace truth(maze, config.lsp.cell, config.lsp.clearance);
+  const sim::RayCaster rays(world);
+  const planning::TrueFreeSpace truth(world, config.lsp.cell, config.lsp.clearance);
+  const bool maze = world.kind == core::WorldKind::kGuidedMaze;
   std::vector<SubgoalSample> out;
-  NavigationTrialOptions o;
-  o.max_steps = config.bench.max_steps;
-  o.mcmc_every = config.bench.mcmc_every;
-  o.on_plan = [&](const LoopState& state, const std::vector<planning::FrontierTarget>& targets) {
+  const auto sample = [&](const LoopState& state, const std::vector<planning::FrontierTarget>& targets) {
     if (state.step % every != 0 || targets.empty()) return;
     const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(*state.view, targets);
     const core::Pose2 pose = state.poses[0];
-    const planning::SubgoalGrid sg(*state.view, frontiers, pose.position(), maze.goal, config.lsp.cell, maze.bounds);
-    if (sg.goal_known()) return;
+    const core::Vec2 goal = maze ? world.goal : pose.position();  // a search's goal: where the agent stands
+    const planning::SubgoalGrid sg(*state.view, frontiers, pose.position(), goal, config.lsp.cell, world.bounds);
+    if (maze && sg.goal_known()) return;
     const std::vector<planning::SubgoalProperties> p = planning::TrueSubgoalProperties(sg, truth, sg.Distances());
     const core::Ring seen = rays.VisibilityPolygon(pose.position());
     const auto visible = [&](const core::Vec2& q) {
       return core::Contains(seen, q) || core::NearRing(q, seen, kSeenMargin);
     };
-    SubgoalSample s{maze.seed, state.step, pose,
-                    maze.goal, 0,          planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
+    SubgoalSample s{world.seed, state.step, pose, goal, 0,
+                    planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
     for (size_t f = 0; f < frontiers.size(); ++f)
       for (int c : sg.cells(f))
         if (visible(sg.raster().Center(c))) {
@@ -44,8 +44,25 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& maze, const 
         }
     if (s.frontiers > 0) out.push_back(std::move(s));
   };
-  RunNavigationTrial(maze, config, o, seed);
+  if (maze) {
+    NavigationTrialOptions o;
+    o.max_steps = config.bench.max_steps;
+    o.mcmc_every = config.bench.mcmc_every;
+    o.on_plan = sample;
+    RunNavigationTrial(world, config, o, seed);
+  } else {
+    TrialOptions o;
+    o.max_steps = config.bench.max_steps;
+    o.mcmc_every = config.bench.mcmc_every;
+    o.open_world_mcmc_every = config.open_world.mcmc_every;
+    o.on_targets = sample;
+    RunSearchTrial(world, config, o, seed);
+  }
   return out;
+}
+
+std::string SubgoalRunsText(const SubgoalDataOptions& o) {
+  return o.kind == core::WorldKind::kGuidedMaze ? "optimistic runs" : "one-agent searches (the goal at the agent)";
 }
 
 std::vector<SubgoalExample> MakeSubgoalExamples(const Config& config, sim::Split split,
@@ -58,10 +75,10 @@ std::vector<SubgoalExample> MakeSubgoalExamples(const Config& config, sim::Split
   std::vector<SubgoalExample> out;
   for (int k = 0; k < count; ++k) {
     const uint64_t seed = uint64_t(first + k);
-    const core::World maze = sim::GenerateWorld(core::WorldKind::kGuidedMaze, config.worlds, seed);
-    const sim::Renderer renderer(maze, config.render);
-    const sim::RayCaster rays(maze);
-    for (SubgoalSample& s : CollectSubgoalSamples(maze, config, seed, o.every, subgoal_grid)) {
+    const core::World world = sim::GenerateWorld(o.kind, config.worlds, seed);
+    const sim::Renderer renderer(world, config.render);
+    const sim::RayCaster rays(world);
+    for (SubgoalSample& s : CollectSubgoalSamples(world, config, seed, o.every, subgoal_grid)) {
       SubgoalExample e{seed,
                        s.step,
                        s.pose,

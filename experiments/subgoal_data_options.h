@@ -1,12 +1,15 @@
 #pragma once
-// YAML section `subgoal_data:`: the guided mazes the subgoal network learns from (training and validation
-// ranges disjoint, all below 10000) and how often an optimistic run through them keeps a sample.
+// YAML section `subgoal_data:`: the worlds the subgoal network learns from (training and validation ranges
+// disjoint, all below 10000), of one kind, and how often a run through them keeps a sample (optimistic runs
+// in guided mazes, searches elsewhere: experiments/subgoal_data.h).
 #include "core/option_fields.h"
+#include "core/world.h"
 #include "sim/training_data.h"
 
 namespace toponav::experiments {
 
 struct SubgoalDataOptions {
+  core::WorldKind kind = core::WorldKind::kGuidedMaze;  // key `kind`: guided_maze, labyrinth or office_park
   int train_first_seed = 1000;  // training mazes: seeds train_first_seed .. + train_num_seeds - 1
   int train_num_seeds = 100;
   int val_first_seed = 2000;  // validation mazes, disjoint from the training ones

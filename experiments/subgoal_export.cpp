@@ -46,11 +46,12 @@ nlohmann::json SubgoalDatasetJson(const Config& c) {
   const SubgoalDataOptions& o = c.subgoal_data;
   nlohmann::json j;
   j["format"] = "toponav-subgoal-dataset-1";
-  j["mazes"] = {{"kind", "guided_maze"},
+  j["mazes"] = {{"kind", core::ToString(o.kind)},
                 {"train_seeds", {o.train_first_seed, o.train_first_seed + o.train_num_seeds - 1}},
                 {"val_seeds", {o.val_first_seed, o.val_first_seed + o.val_num_seeds - 1}},
                 {"every", o.every},
-                {"runs", "one optimistic run through each maze (its seed the maze's); a sample every 'every' steps"}};
+                {"runs", "one run through each world (its seed the world's): " + SubgoalRunsText(o) +
+                             "; a sample every 'every' steps"}};
   j["vertex_grid"] = {{"rows", 32}, {"cols", 128}, {"max_range", 100.0}};
   j["subgoal_grid"] = {
       {"rows", 64},

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/world.h"
+#include "experiments/agent_loop.h"
 #include "experiments/config.h"
 #include "planning/navigation.h"
 
@@ -26,6 +27,8 @@ struct TrialOptions {
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
   // Called every step before agents move with the frontier targets on offer and each agent's choice (traces).
   std::function<void(const std::vector<planning::FrontierTarget>&, const std::vector<planning::FrontierChoice>&)> on_plan;
+  // The same moment with the loop's state and the frontier targets alone (training data).
+  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_targets;
 };
 
 struct TrialResult {

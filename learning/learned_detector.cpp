@@ -1,8 +1,9 @@
 #include "learning/learned_detector.h"
 
-
 #include <cmath>
+#include <optional>
 
+#include "core/error.h"
 #include "learning/vertex_model.h"
 
 namespace toponav::learning {
@@ -28,12 +29,19 @@ core::CellGrid SubgoalCells(const SubgoalOutput& s) {
 
 class LearnedDetector : public core::VertexDetectorInterface {
  public:
-  LearnedDetector(VertexModel model, const DecodeOptions& decode) : model_(std::move(model)), decode_(decode) {}
+  LearnedDetector(VertexModel model, const DecodeOptions& decode, std::optional<VertexModel> subgoal)
+      : model_(std::move(model)), decode_(decode), subgoal_(std::move(subgoal)) {}
 
   core::Observation Detect(const core::Panorama& image, const core::DetectionContext& context) override {
     core::Observation z;
     z.pose = context.pose;
     z.agent = context.agent;
+    if (subgoal_ && context.goal) {
+      const GridOutput out = model_.Predict(image);
+      z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
+      z.cells = SubgoalCells(subgoal_->PredictWithGoal(image, GoalInView::FromAgentFrame(*context.goal)).second);
+      return z;
+    }
     if (!model_.options().subgoal || !context.goal) {
       const GridOutput out = model_.Predict(image);
       z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
@@ -48,13 +56,22 @@ class LearnedDetector : public core::VertexDetectorInterface {
  private:
   VertexModel model_;
   DecodeOptions decode_;
+  std::optional<VertexModel> subgoal_;
 };
 
 }  // namespace
 
 std::unique_ptr<core::VertexDetectorInterface> CreateLearnedDetector(const std::string& model_path,
-                                                                     const DecodeOptions& decode) {
-  return std::make_unique<LearnedDetector>(VertexModel::Load(model_path), decode);
+                                                                     const DecodeOptions& decode,
+                                                                     const std::string& subgoal_path) {
+  std::optional<VertexModel> subgoal;
+  if (!subgoal_path.empty()) {
+    subgoal = VertexModel::Load(subgoal_path);
+    if (!subgoal->options().subgoal)
+      throw core::DataError(subgoal_path, "sensor.subgoal_model is a vertex network without subgoal outputs "
+                                          "(not trained with train.subgoal)");
+  }
+  return std::make_unique<LearnedDetector>(VertexModel::Load(model_path), decode, std::move(subgoal));
 }
 
 }  // namespace toponav::learning

@@ -12,8 +12,12 @@
 
 namespace toponav::learning {
 
-// Throws core::DataError naming 'model_path' if it is missing or not a vertex-network file.
+// Throws core::DataError naming 'model_path' if it is missing or not a vertex-network file.  With
+// 'subgoal_path', a second network -- a subgoal model -- fills the cells wherever a goal is given, and the
+// vertices still come from the first (its vertex outputs stay the ones it was chosen for); a file that is not
+// a subgoal model is a core::DataError naming it.
 std::unique_ptr<core::VertexDetectorInterface> CreateLearnedDetector(const std::string& model_path,
-                                                                     const DecodeOptions& decode);
+                                                                     const DecodeOptions& decode,
+                                                                     const std::string& subgoal_path = "");
 
 }  // namespace toponav::learning

@@ -12,9 +12,10 @@
 namespace toponav::sim {
 
 // 'goal': in world coordinates, passed to the detector relative to each pose (goal-conditioned networks);
-// none: the detector sees no goal.  Throws core::ConfigError for bad render options.
+// none: the detector sees no goal, unless 'goal_at_agent' tells it the goal is where the agent stands (a
+// search's exploration estimates).  Throws core::ConfigError for bad render options.
 std::unique_ptr<core::VertexSensorInterface> CreateRenderingSensor(
     const core::World& world, const RenderOptions& render, std::unique_ptr<core::VertexDetectorInterface> detector,
-    std::optional<core::Vec2> goal = std::nullopt);
+    std::optional<core::Vec2> goal = std::nullopt, bool goal_at_agent = false);
 
 }  // namespace toponav::sim

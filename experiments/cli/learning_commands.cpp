@@ -40,9 +40,9 @@ struct DatagenArgs {
 int RunSubgoalDatagen(const DatagenArgs& a, const experiments::Config& cfg) {
   const auto& d = cfg.subgoal_data;
   fmt::print(
-      "toponav datagen --subgoal: optimistic runs through {} training and {} validation mazes, a sample every {} "
+      "toponav datagen --subgoal: {} through {} training and {} validation worlds ({}), a sample every {} "
       "steps{} -> {}\n",
-      d.train_num_seeds, d.val_num_seeds, d.every,
+      experiments::SubgoalRunsText(d), d.train_num_seeds, d.val_num_seeds, core::ToString(d.kind), d.every,
       a.max_samples > 0 ? fmt::format(", at most {} per split", a.max_samples) : "", a.out);
   const auto s = experiments::ExportSubgoalDataset(cfg, a.out, a.max_samples);
   fmt::print(
@@ -90,13 +90,13 @@ struct TrainArgs {
 
 std::string Duration(double s) { return fmt::format("{}m{:02d}s", int(s) / 60, int(s) % 60); }
 
-// The subgoal network's examples: optimistic runs through the subgoal_data mazes, rendered.
+// The subgoal network's examples: runs through the subgoal_data worlds, rendered.
 learning::TrainingSet SubgoalTrainingSet(const experiments::Config& cfg) {
   learning::TrainingSet set;
   for (const sim::Split split : {sim::Split::kTrain, sim::Split::kVal}) {
     auto& into = split == sim::Split::kTrain ? set.train : set.val;
     const auto progress = [&](int done, int total, size_t n) {
-      std::cerr << fmt::format("[data] {} mazes {}/{}: {} examples\n", sim::ToString(split), done, total, n);
+      std::cerr << fmt::format("[data] {} worlds {}/{}: {} examples\n", sim::ToString(split), done, total, n);
     };
     for (auto& e : experiments::MakeSubgoalExamples(cfg, split, progress)) {
       const learning::GoalInView goal = learning::GoalInView::FromAgentFrame(e.goal);
@@ -105,7 +105,7 @@ learning::TrainingSet SubgoalTrainingSet(const experiments::Config& cfg) {
   }
   const auto& d = cfg.subgoal_data;
   set.identity_json = nlohmann::json{
-      {"kinds", {"guided_maze"}},
+      {"kinds", {core::ToString(d.kind)}},
       {"train_seeds", {d.train_first_seed, d.train_first_seed + d.train_num_seeds - 1}},
       {"val_seeds", {d.val_first_seed, d.val_first_seed + d.val_num_seeds - 1}},
       {"every", d.every}}.dump();
@@ -118,8 +118,9 @@ int RunTrain(const TrainArgs& a) {
   const auto& sd = cfg.subgoal_data;
   const std::string data =
       t.subgoal ? fmt::format(
-                      "subgoal examples every {} steps of optimistic runs through {} training and {} validation mazes",
-                      sd.every, sd.train_num_seeds, sd.val_num_seeds)
+                      "subgoal examples every {} steps of {} through {} training and {} validation worlds ({})",
+                      sd.every, experiments::SubgoalRunsText(sd), sd.train_num_seeds, sd.val_num_seeds,
+                      core::ToString(sd.kind))
                 : fmt::format("{} training and {} validation worlds of {} kinds, {} samples each",
                               cfg.datagen.train_num_seeds, cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(),
                               cfg.datagen.samples_per_world);

@@ -84,7 +84,59 @@ TEST(SensorFactory, TheLearnedKindRunsTheModelOnTheRenderedPanorama) {
   TrialOptions t;
   t.max_steps = 3;
   EXPECT_EQ(RunSearchTrial(w, c, t, 7).steps, 3);
+  // A search that asks it what lies past frontiers finds it has no subgoal outputs: an error naming the file.
+  Config explore = c;
+  explore.search.tour = true;
+  explore.search.exploration_estimate = "learned";
+  try {
+    RunSearchTrial(w, explore, t, 7);
+    ADD_FAILURE() << "no error";
+  } catch (const core::DataError& e) {
+    EXPECT_NE(std::string(e.what()).find(model), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("train.subgoal"), std::string::npos) << e.what();
+  }
+  // A subgoal model, told the goal is at the agent, feeds the estimator: the same search runs.
+  tiny.subgoal = true;
+  learning::VertexModel(tiny, 5).Save(model);
+  EXPECT_EQ(RunSearchTrial(w, explore, t, 7).steps, 3);
   std::filesystem::remove(model);
+}
+
+TEST(SensorFactory, ASubgoalModelBesideTheVertexModelFillsTheCellsAndLeavesTheVerticesToIt) {
+  const auto temp = [](const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("toponav_sf2_" + std::to_string(::getpid()) + name)).string();
+  };
+  const std::string vertex = temp("_v.pt"), subgoal = temp("_s.pt");
+  learning::VertexNetOptions tiny;
+  tiny.width = 0.125;
+  learning::VertexModel(tiny, 5).Save(vertex);
+  tiny.subgoal = true;
+  learning::VertexModel(tiny, 6).Save(subgoal);
+  const Config c = ParseConfig("sensor:\n  kind: learned\n  model: " + vertex + "\n  subgoal_model: " + subgoal +
+                               "\n  threshold: 0.3\n", "x.yaml");
+  EXPECT_EQ(c.sensor.learned.subgoal_model, subgoal);
+  const core::World w = sim::GenerateLabyrinth({}, 3);
+  SensorSetup setup{&w, {}, std::nullopt, 1};
+  setup.goal_at_agent = true;
+  const core::Observation z = CreateSensor(c.sensor, setup)->Observe(w.start, 0);
+  EXPECT_FALSE(z.cells.empty()) << "the subgoal model's outputs";
+  const learning::GridOutput out = learning::VertexModel::Load(vertex).Predict(sim::Renderer(w, {}).Render(w.start));
+  learning::DecodeOptions decode;
+  decode.threshold = 0.3f;
+  EXPECT_EQ(z.detections.size(), learning::DecodeDetections(out.vertex, out.labels, out.grid, decode).size())
+      << "the vertex model's detections";
+  EXPECT_TRUE(CreateSensor(c.sensor, {&w, {}, std::nullopt, 1})->Observe(w.start, 0).cells.empty()) << "no goal";
+  // A vertex network named as the subgoal model is an error naming its file.
+  SensorConfig swapped = c.sensor;
+  swapped.learned.subgoal_model = vertex;
+  try {
+    CreateSensor(swapped, setup);
+    ADD_FAILURE() << "no error";
+  } catch (const core::DataError& e) {
+    EXPECT_NE(std::string(e.what()).find(vertex), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(vertex);
+  std::filesystem::remove(subgoal);
 }
 
 TEST(SensorFactory, TheLearnedKindNeedsAReadableModelAndOnlyItsOwnKeys) {

@@ -40,6 +40,26 @@ TEST(SubgoalData, AnOptimisticRunThroughASmallMazeYieldsLabelledSamplesWithAWayT
   EXPECT_GT(negative + positive, positive) << "and some do not (a maze has dead ends)";
 }
 
+TEST(SubgoalData, ASearchThroughALabyrinthLabelsEveryFrontierWithWhatLiesPastIt) {
+  const core::World w = sim::GenerateWorld(core::WorldKind::kLabyrinth, {}, 3000);
+  Config cfg;
+  cfg.search.tour = true;
+  cfg.bench.max_steps = 40;
+  const auto samples = CollectSubgoalSamples(w, cfg, 3000, 5);
+  ASSERT_FALSE(samples.empty());
+  int explored = 0;
+  for (const auto& s : samples) {
+    EXPECT_EQ(s.goal.x, s.pose.x) << "the goal is where the agent stands";
+    EXPECT_EQ(s.goal.y, s.pose.y);
+    for (size_t i = 0; i < s.labels.mask.size(); ++i) {
+      if (!s.labels.mask[i]) continue;
+      EXPECT_EQ(s.labels.ps[i], 0.0f) << "no frontier leads to a goal in known space";
+      explored += s.labels.exploration[i] > 10.0f;
+    }
+  }
+  EXPECT_GT(explored, 0) << "the rest of the labyrinth lies past some frontier";
+}
+
 TEST(SubgoalData, ExamplesCarryThePanoramaVertexLabelsGoalInViewAndSubgoalLabelsOfTheirPose) {
   Config cfg;
   cfg.planning.frontier_row_gap = 10.0;

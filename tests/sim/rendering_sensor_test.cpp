@@ -55,6 +55,12 @@ TEST(RenderingSensor, RendersThePanoramaAtThePoseAndPassesTheGoalInTheAgentsFram
   auto no_goal = CreateRenderingSensor(w, render, std::make_unique<RecordingDetector>(&seen));
   no_goal->Observe(pose, 0);
   EXPECT_FALSE(seen.back().context.goal);
+  // A search's subgoal network is told the goal is where the agent stands, wherever that is.
+  auto at_agent = CreateRenderingSensor(w, render, std::make_unique<RecordingDetector>(&seen), std::nullopt, true);
+  at_agent->Observe({12, 9, 1.0}, 0);
+  ASSERT_TRUE(seen.back().context.goal);
+  EXPECT_EQ(seen.back().context.goal->x, 0.0);
+  EXPECT_EQ(seen.back().context.goal->y, 0.0);
 }
 
 TEST(GoalInAgentFrame, IsTheGoalRotatedIntoTheAgentsHeading) {
