@@ -217,7 +217,7 @@ file(READ ${WORK}/lsp_data/train/000000_subgoal.csv frontier_cells)
 expect_contains("${frontier_cells}" "row,col,ps,delta_success,exploration")
 run(0 ${TOPONAV} train --config ${WORK}/lsp.yaml --out ${WORK}/lsp_train)
 expect_contains("${OUT}" "starting from")
-expect_contains("${ERR}" "[data] val mazes 1/1")
+expect_contains("${ERR}" "[data] val worlds 1/1")
 file(WRITE ${WORK}/lsp_run.yaml "sensor:\n  kind: learned\n  model: ${WORK}/lsp_train/model.pt\nplanning:\n  frontier_row_gap: 10\n")
 run(0 ${TOPONAV} trial --config ${WORK}/lsp_run.yaml --kind guided_maze --seed 7003 --planner lsp --max-steps 6 --out ${WORK}/lsp_trial
     --trace ${WORK}/lsp_trial/trace.csv)
