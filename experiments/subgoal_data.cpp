@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "experiments/navigation_trial.h"
 #include "experiments/trial.h"
+#include "planning/frontier_exploration.h"
 #include "sim/raycast.h"
 #include "sim/render.h"
 #include "sim/worlds.h"
@@ -29,13 +30,14 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& world, const
     const core::Vec2 goal = maze ? world.goal : pose.position();  // a search's goal: where the agent stands
     const planning::SubgoalGrid sg(*state.view, frontiers, pose.position(), goal, config.lsp.cell, world.bounds);
     if (maze && sg.goal_known()) return;
-    const std::vector<planning::SubgoalProperties> p = planning::TrueSubgoalProperties(sg, truth, sg.Distances());
+    const std::vector<planning::SubgoalProperties> p = planning::TrueSubgoalProperties(
+        sg, truth, maze ? sg.Distances() : planning::ProblemWithoutDistances(frontiers.size()));
     const core::Ring seen = rays.VisibilityPolygon(pose.position());
     const auto visible = [&](const core::Vec2& q) {
       return core::Contains(seen, q) || core::NearRing(q, seen, kSeenMargin);
     };
-    SubgoalSample s{world.seed, state.step, pose, goal, 0,
-                    planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
+    SubgoalSample s{world.seed, state.step, pose,
+                    goal,       0,          planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
     for (size_t f = 0; f < frontiers.size(); ++f)
       for (int c : sg.cells(f))
         if (visible(sg.raster().Center(c))) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 #include "core/error.h"
@@ -32,11 +33,23 @@ double RocAuc(const std::vector<float>& scores, const std::vector<bool>& positiv
   return (rank_sum - 0.5 * double(pos) * double(pos + 1)) / (double(pos) * double(neg));
 }
 
+void CountOrderedPairs(const std::vector<FrontierCost>& frontiers, double* agree, size_t* pairs) {
+  for (size_t i = 0; i < frontiers.size(); ++i)
+    for (size_t j = i + 1; j < frontiers.size(); ++j) {
+      const FrontierCost& lo = frontiers[i].truth <= frontiers[j].truth ? frontiers[i] : frontiers[j];
+      const FrontierCost& hi = &lo == &frontiers[i] ? frontiers[j] : frontiers[i];
+      if (hi.truth < SubgoalEval::kOrderRatio * lo.truth) continue;
+      ++*pairs;
+      *agree += hi.estimate > lo.estimate ? 1.0 : hi.estimate == lo.estimate ? 0.5 : 0.0;
+    }
+}
+
 namespace {
 
 int Channel(const core::CellGrid& cells, const std::string& name, const std::string& model) {
   const int c = cells.Channel(name);
-  if (c < 0) throw core::ConfigError("<sensor>", "sensor.model", model, "gives no '" + name + "' cells: not a subgoal model");
+  if (c < 0)
+    throw core::ConfigError("<sensor>", "sensor.model", model, "gives no '" + name + "' cells: not a subgoal model");
   return c;
 }
 
@@ -47,12 +60,16 @@ struct Tally {
   std::vector<bool> positive;
   std::vector<int> band;  // per cell: its range band (SubgoalEval::kBandEdges)
   double cross_entropy = 0, ps_pos = 0, ps_neg = 0, success = 0, exploration = 0;
+  double truth_sum = 0, estimate_sum = 0, order_agree = 0;
+  size_t order_pairs = 0;
 
   void Add(const core::CellGrid& out, const core::SubgoalLabelGrid& truth) {
     const int cp = Channel(out, "ps", model), cs = Channel(out, "delta_success", model);
     const int ce = Channel(out, "exploration", model);
-    TOPONAV_CHECK(out.rows == truth.grid.rows && out.cols == truth.grid.cols,
-                  "network grid " << out.rows << "x" << out.cols << " vs labels " << truth.grid.rows << "x" << truth.grid.cols);
+    TOPONAV_CHECK(
+        out.rows == truth.grid.rows && out.cols == truth.grid.cols,
+        "network grid " << out.rows << "x" << out.cols << " vs labels " << truth.grid.rows << "x" << truth.grid.cols);
+    std::map<float, std::pair<double, int>> frontiers;  // a frontier's cells share its true cost: their sum, count
     for (size_t i = 0; i < truth.mask.size(); ++i) {
       if (!truth.mask[i]) continue;
       const int r = int(i) / out.cols, c = int(i) % out.cols;
@@ -65,8 +82,16 @@ struct Tally {
       cross_entropy -= y ? std::log(p) : std::log(1.0 - p);
       (y ? ps_pos : ps_neg) += p;
       if (y) success += std::abs(out.at(r, c, cs) - truth.delta_success[i]);
-      else exploration += std::abs(out.at(r, c, ce) - truth.exploration[i]);
+      if (y) continue;
+      const double estimate = out.at(r, c, ce);
+      exploration += std::abs(estimate - truth.exploration[i]);
+      truth_sum += truth.exploration[i], estimate_sum += estimate;
+      auto& [sum, n] = frontiers[truth.exploration[i]];
+      sum += estimate, ++n;
     }
+    std::vector<FrontierCost> costs;
+    for (const auto& [t, s] : frontiers) costs.push_back({t, s.first / s.second});
+    CountOrderedPairs(costs, &order_agree, &order_pairs);
   }
 
   SubgoalEval Summary() const {
@@ -80,6 +105,10 @@ struct Tally {
     e.mean_ps_negative = neg ? ps_neg / double(neg) : 0.0;
     e.success_mae = e.positives ? success / double(e.positives) : 0.0;
     e.exploration_mae = neg ? exploration / double(neg) : 0.0;
+    e.exploration_truth = neg ? truth_sum / double(neg) : 0.0;
+    e.exploration_estimate = neg ? estimate_sum / double(neg) : 0.0;
+    e.frontier_pairs = order_pairs;
+    e.exploration_order = order_pairs ? order_agree / double(order_pairs) : 0.5;
     for (int b = 0; b < 3; ++b) {
       std::vector<float> scores;
       std::vector<bool> flags;
@@ -104,18 +133,22 @@ SubgoalEval EvaluateSubgoalEstimates(const Config& config, const LearnedSensorOp
   Tally tally;
   tally.model = model.model;
   int examples = 0;
+  const bool maze = options.kind == core::WorldKind::kGuidedMaze;
   for (size_t k = 0; k < options.seeds.size(); ++k) {
     const uint64_t seed = options.seeds[k];
-    const core::World maze = sim::GenerateWorld(core::WorldKind::kGuidedMaze, config.worlds, seed);
-    const auto sensor = CreateSensor(learned, {&maze, config.render, maze.goal, seed});
-    for (const SubgoalSample& s : CollectSubgoalSamples(maze, config, seed, options.every, core::kSubgoalGrid)) {
+    const core::World world = sim::GenerateWorld(options.kind, config.worlds, seed);
+    SensorSetup setup{&world, config.render, std::nullopt, seed};
+    if (maze) setup.goal = world.goal;
+    setup.goal_at_agent = !maze;  // a search's samples: the goal where the agent stands
+    const auto sensor = CreateSensor(learned, setup);
+    for (const SubgoalSample& s : CollectSubgoalSamples(world, config, seed, options.every, core::kSubgoalGrid)) {
       tally.Add(sensor->Observe(s.pose, 0).cells, s.labels);
       ++examples;
     }
     if (progress) progress(int(k + 1), int(options.seeds.size()));
   }
   SubgoalEval e = tally.Summary();
-  e.mazes = int(options.seeds.size());
+  e.worlds = int(options.seeds.size());
   e.examples = examples;
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return e;

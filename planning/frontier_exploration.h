@@ -13,6 +13,11 @@
 
 namespace toponav::planning {
 
+// The ordering problem of 'frontiers' frontiers with no distance tables (all zero): enough when the goal is
+// at the agent, since no frontier leads to it -- the estimators and the true properties read how many
+// frontiers there are, and costs toward a goal only where one does.  It spares a Dijkstra per frontier.
+OrderingProblem ProblemWithoutDistances(size_t frontiers);
+
 // Sets each target's 'exploration' from 'estimator' (path units, clamped to >= 0), on a raster of 'view' with
 // cells of 'cell' units over 'region'.  Targets whose frontier 'view' lacks (inspection lookouts) leave every
 // estimate at 0.

@@ -117,10 +117,9 @@ int RunTrain(const TrainArgs& a) {
   const auto& t = cfg.train;
   const auto& sd = cfg.subgoal_data;
   const std::string data =
-      t.subgoal ? fmt::format(
-                      "subgoal examples every {} steps of {} through {} training and {} validation worlds ({})",
-                      sd.every, experiments::SubgoalRunsText(sd), sd.train_num_seeds, sd.val_num_seeds,
-                      core::ToString(sd.kind))
+      t.subgoal ? fmt::format("subgoal examples every {} steps of {} through {} training and {} validation worlds ({})",
+                              sd.every, experiments::SubgoalRunsText(sd), sd.train_num_seeds, sd.val_num_seeds,
+                              core::ToString(sd.kind))
                 : fmt::format("{} training and {} validation worlds of {} kinds, {} samples each",
                               cfg.datagen.train_num_seeds, cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(),
                               cfg.datagen.samples_per_world);
@@ -163,14 +162,15 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
 // ---------------------------------------------------------------- eval-sensor
 
 struct EvalSensorArgs {
-  std::string config, model, kind = "labyrinth", seeds = "10000-10019", out;
+  std::string config, model, kind, seeds = "10000-10019", out;
   int samples = 10;
   bool subgoal = false;
   int every = 6;
 };
 
-// --subgoal: the network's frontier estimates against the truth along optimistic runs through guided mazes
-// (the config's sensor drives the runs; the model is --model or the config's learned sensor's).
+// --subgoal: the network's frontier estimates against the truth along runs made as its training data is
+// (optimistic runs through guided mazes, searches elsewhere; the world kind is --kind or the config's
+// subgoal_data.kind; the config's sensor drives the runs; the model is --model or the config's learned sensor's).
 int RunEvalSubgoal(const EvalSensorArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
   experiments::LearnedSensorOptions model = cfg.sensor.learned;
@@ -179,21 +179,24 @@ int RunEvalSubgoal(const EvalSensorArgs& a) {
     throw core::ConfigError(a.config.empty() ? "<defaults>" : a.config, "sensor.model", "",
                             "--subgoal needs a subgoal model: --model, or a config whose sensor is learned");
   experiments::SubgoalEvalOptions o;
+  o.kind = a.kind.empty() ? cfg.subgoal_data.kind : ParseKind(a.kind);
   o.seeds = experiments::ParseSeeds(a.seeds);
   o.every = a.every;
-  const auto e = experiments::EvaluateSubgoalEstimates(cfg, model, o, [](int done, int total) {
-    std::cerr << fmt::format("[eval] {}/{} mazes\n", done, total);
-  });
+  const auto e = experiments::EvaluateSubgoalEstimates(
+      cfg, model, o, [](int done, int total) { std::cerr << fmt::format("[eval] {}/{} worlds\n", done, total); });
   fmt::print(
-      "{} mazes (seeds {}), {} samples, {} frontier cells ({:.1f} % with Ps = 1), model {}:\n"
+      "{} {} worlds (seeds {}), {} samples, {} frontier cells ({:.1f} % with Ps = 1), model {}:\n"
       "  Ps: AUC {:.3f}, cross-entropy {:.3f}, mean {:.3f} on Ps = 1 cells and {:.3f} on Ps = 0 cells\n"
       "  success cost: mean |error| {:.1f} (Ps = 1 cells); exploration cost: mean |error| {:.1f} (Ps = 0 cells) "
       "({:.1f} s)\n"
-      "  Ps AUC by range: {:.3f} nearer than {} ({} cells), {:.3f} up to {} ({}), {:.3f} farther ({})\n",
-      e.mazes, a.seeds, e.examples, e.cells, 100.0 * e.positive_rate(), model.model, e.auc, e.cross_entropy,
-      e.mean_ps_positive, e.mean_ps_negative, e.success_mae, e.exploration_mae, e.seconds, e.band_auc[0],
-      experiments::SubgoalEval::kBandEdges[0], e.band_cells[0], e.band_auc[1], experiments::SubgoalEval::kBandEdges[1],
-      e.band_cells[1], e.band_auc[2], e.band_cells[2]);
+      "  Ps AUC by range: {:.3f} nearer than {} ({} cells), {:.3f} up to {} ({}), {:.3f} farther ({})\n"
+      "  exploration cost on Ps = 0 cells: mean {:.1f} true, {:.1f} estimated; frontier order by it: {:.3f} of {} "
+      "pairs (true costs {}x or more apart) right\n",
+      core::ToString(o.kind), e.worlds, a.seeds, e.examples, e.cells, 100.0 * e.positive_rate(), model.model, e.auc,
+      e.cross_entropy, e.mean_ps_positive, e.mean_ps_negative, e.success_mae, e.exploration_mae, e.seconds,
+      e.band_auc[0], experiments::SubgoalEval::kBandEdges[0], e.band_cells[0], e.band_auc[1],
+      experiments::SubgoalEval::kBandEdges[1], e.band_cells[1], e.band_auc[2], e.band_cells[2], e.exploration_truth,
+      e.exploration_estimate, e.exploration_order, e.frontier_pairs, experiments::SubgoalEval::kOrderRatio);
   return 0;
 }
 
@@ -201,32 +204,36 @@ int RunEvalSensor(const EvalSensorArgs& a) {
   if (a.subgoal) return RunEvalSubgoal(a);
   const experiments::Config cfg = LoadWithModel(a.config, a.model);
   experiments::SensorEvalOptions o;
-  o.kind = ParseKind(a.kind);
+  o.kind = ParseKind(a.kind.empty() ? "labyrinth" : a.kind);
   o.seeds = experiments::ParseSeeds(a.seeds);
   o.samples_per_world = a.samples;
   const auto e = experiments::EvaluateSensor(cfg, o);
-  const std::string on = fmt::format("{} seeds {}, {} poses a world ({} sensor{})", a.kind, a.seeds, a.samples,
-                                     experiments::ToString(cfg.sensor.kind), a.model.empty() ? "" : " " + a.model);
+  const std::string on =
+      fmt::format("{} seeds {}, {} poses a world ({} sensor{})", core::ToString(o.kind), a.seeds, a.samples,
+                  experiments::ToString(cfg.sensor.kind), a.model.empty() ? "" : " " + a.model);
   fmt::print(
       "{} observations, {} true vertices, {} detections: precision {:.3f}, recall {:.3f}, F1 {:.3f}, label accuracy "
       "{:.3f}, mean range error {:.2f}, mean bearing error {:.4f} rad ({:.1f} s)\n",
       e.observations, e.true_vertices, e.detections, e.precision(), e.recall(), e.f1(), e.label_accuracy(),
       e.mean_range_error(), e.mean_bearing_error(), e.seconds);
   const auto& edges = experiments::SensorEval::kRangeEdges;
-  fmt::print("  recall by range: {:.3f} nearer than {} ({} vertices), {:.3f} to {} ({}), {:.3f} to {} ({}), "
-             "{:.3f} farther ({})\n",
-             e.recall_in_band(0), edges[0], e.true_by_range[0], e.recall_in_band(1), edges[1], e.true_by_range[1],
-             e.recall_in_band(2), edges[2], e.true_by_range[2], e.recall_in_band(3), e.true_by_range[3]);
+  fmt::print(
+      "  recall by range: {:.3f} nearer than {} ({} vertices), {:.3f} to {} ({}), {:.3f} to {} ({}), "
+      "{:.3f} farther ({})\n",
+      e.recall_in_band(0), edges[0], e.true_by_range[0], e.recall_in_band(1), edges[1], e.true_by_range[1],
+      e.recall_in_band(2), edges[2], e.true_by_range[2], e.recall_in_band(3), e.true_by_range[3]);
   const auto& sight = experiments::SensorEval::kSightEdges;
-  fmt::print("  recall by sight-line angle to the vertex's walls: {:.3f} under {:.0f} deg ({} vertices), {:.3f} to {:.0f} "
-             "({}), {:.3f} to {:.0f} ({}), {:.3f} beyond ({})\n",
-             e.recall_at_sight(0), sight[0] * 180 / core::kPi, e.true_by_sight[0], e.recall_at_sight(1),
-             sight[1] * 180 / core::kPi, e.true_by_sight[1], e.recall_at_sight(2), sight[2] * 180 / core::kPi,
-             e.true_by_sight[2], e.recall_at_sight(3), e.true_by_sight[3]);
-  fmt::print("  recall by true label: right gap {:.3f} ({}), corner {:.3f} ({}), left gap {:.3f} ({}), "
-             "point {:.3f} ({})\n",
-             e.recall_of_label(0), e.true_by_label[0], e.recall_of_label(1), e.true_by_label[1], e.recall_of_label(2),
-             e.true_by_label[2], e.recall_of_label(3), e.true_by_label[3]);
+  fmt::print(
+      "  recall by sight-line angle to the vertex's walls: {:.3f} under {:.0f} deg ({} vertices), {:.3f} to {:.0f} "
+      "({}), {:.3f} to {:.0f} ({}), {:.3f} beyond ({})\n",
+      e.recall_at_sight(0), sight[0] * 180 / core::kPi, e.true_by_sight[0], e.recall_at_sight(1),
+      sight[1] * 180 / core::kPi, e.true_by_sight[1], e.recall_at_sight(2), sight[2] * 180 / core::kPi,
+      e.true_by_sight[2], e.recall_at_sight(3), e.true_by_sight[3]);
+  fmt::print(
+      "  recall by true label: right gap {:.3f} ({}), corner {:.3f} ({}), left gap {:.3f} ({}), "
+      "point {:.3f} ({})\n",
+      e.recall_of_label(0), e.true_by_label[0], e.recall_of_label(1), e.true_by_label[1], e.recall_of_label(2),
+      e.true_by_label[2], e.recall_of_label(3), e.true_by_label[3]);
   fmt::print("  bias by true label (detected - true; bearing toward the gap for gaps, else counter-clockwise): ");
   for (size_t l = 0; l < 4; ++l)
     fmt::print("{}{} range {:+.2f} bearing {:+.4f}", l ? ", " : "", core::ToString(core::VertexLabel(l)),
@@ -244,7 +251,7 @@ CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
                                      "label accuracy, range/bearing error, and a calibrated noisy-sensor block");
   cmd->add_option("--config", a->config, "Config whose sensor: to evaluate (default: the noisy sensor)");
   cmd->add_option("--model", a->model, "Evaluate the learned sensor with this model file instead");
-  cmd->add_option("--kind", a->kind, "World kind")->capture_default_str();
+  cmd->add_option("--kind", a->kind, "World kind (default labyrinth; with --subgoal, the config's subgoal_data.kind)");
   cmd->add_option("--seeds", a->seeds, "World seeds A-B (held-out quality: seeds from 10000, never trained on)")
       ->capture_default_str();
   cmd->add_option("--samples-per-world", a->samples, "Poses per world")
@@ -252,8 +259,9 @@ CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", a->out, "Also write the sensor: block to this YAML file");
   cmd->add_flag("--subgoal", a->subgoal,
-                "Score a subgoal (LSP) network's frontier estimates instead: Ps AUC, cross-entropy, cost errors along "
-                "optimistic runs through guided mazes --seeds (the config's sensor drives them)");
+                "Score a subgoal (LSP) network's frontier estimates instead: Ps AUC, cross-entropy, cost errors, "
+                "frontier order by exploration cost along runs through --seeds (optimistic in guided mazes, searches "
+                "elsewhere; the config's sensor drives them)");
   cmd->add_option("--every", a->every, "With --subgoal: a sample every this many steps")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));

@@ -15,6 +15,39 @@ TEST(RocAuc, RanksPositivesAboveNegatives) {
   EXPECT_DOUBLE_EQ(RocAuc({0.3f, 0.7f}, {true, true}), 0.5) << "one class only";
 }
 
+TEST(CountOrderedPairs, CountsOnlyPairsFarApartAndWhetherTheEstimatesOrderThemAlike) {
+  double agree = 0.0;
+  size_t pairs = 0;
+  // 100 vs 120: too close to count; 100 and 120 vs 400: two pairs, one ordered right, one wrong.
+  CountOrderedPairs({{100, 50}, {120, 500}, {400, 300}}, &agree, &pairs);
+  EXPECT_EQ(pairs, 2u);
+  EXPECT_DOUBLE_EQ(agree, 1.0);
+  CountOrderedPairs({{400, 7}, {50, 7}}, &agree, &pairs);  // a tie counts half, whichever comes first
+  EXPECT_EQ(pairs, 3u);
+  EXPECT_DOUBLE_EQ(agree, 1.5);
+  CountOrderedPairs({{30, 1}}, &agree, &pairs);
+  EXPECT_EQ(pairs, 3u) << "one frontier makes no pair";
+}
+
+TEST(SubgoalEval, ScoresExplorationCostsAlongASearchThroughALabyrinth) {
+  Config config;
+  LearnedSensorOptions model;
+  model.model = TOPONAV_SOURCE_DIR "/models/lsp_net_cpu.pt";
+  SubgoalEvalOptions o;
+  o.kind = core::WorldKind::kLabyrinth;
+  o.seeds = {4001};
+  o.every = 25;
+  const SubgoalEval e = EvaluateSubgoalEstimates(config, model, o);
+  EXPECT_EQ(e.worlds, 1);
+  ASSERT_GT(e.examples, 0);
+  ASSERT_GT(e.cells, 0u);
+  EXPECT_EQ(e.positives, 0u) << "the goal is where the agent stands: no frontier leads to it";
+  EXPECT_GT(e.exploration_truth, 0.0);
+  EXPECT_GT(e.exploration_mae, 0.0);
+  EXPECT_GE(e.exploration_order, 0.0);
+  EXPECT_LE(e.exploration_order, 1.0);
+}
+
 TEST(SubgoalEval, ScoresTheCommittedNetworkOnAMaze) {
   Config config;
   config.planning.frontier_row_gap = 10;
@@ -24,7 +57,7 @@ TEST(SubgoalEval, ScoresTheCommittedNetworkOnAMaze) {
   o.seeds = {7003};
   o.every = 10;
   const SubgoalEval e = EvaluateSubgoalEstimates(config, model, o);
-  EXPECT_EQ(e.mazes, 1);
+  EXPECT_EQ(e.worlds, 1);
   ASSERT_GT(e.examples, 0);
   ASSERT_GT(e.cells, 0u);
   EXPECT_LE(e.positives, e.cells);
