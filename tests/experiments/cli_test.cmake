@@ -232,6 +232,8 @@ endif()
 # eval-sensor --subgoal: the trained network's frontier estimates scored along an optimistic maze run
 run(0 ${TOPONAV} eval-sensor --subgoal --config ${WORK}/lsp.yaml --model ${WORK}/lsp_train/model.pt --seeds 7003-7003 --every 25)
 expect_contains("${OUT}" "Ps: AUC")
+expect_contains("${OUT}" "guided_maze 1 worlds")  # the config's subgoal_data.kind, --kind not given
+expect_contains("${OUT}" "frontier order by it")
 run(2 ${TOPONAV} eval-sensor --subgoal --config ${WORK}/lsp.yaml --model ${SOURCE_DIR}/models/vertex_net_cpu.pt --seeds 7003-7003 --every 25)
 expect_contains("${ERR}" "not a subgoal model")
 # eval-sensor: the trained model's scores, and a calibrated noisy-sensor block that is itself a valid config
