@@ -29,18 +29,23 @@ TEST(CountOrderedPairs, CountsOnlyPairsFarApartAndWhetherTheEstimatesOrderThemAl
   EXPECT_EQ(pairs, 3u) << "one frontier makes no pair";
 }
 
-TEST(SubgoalEval, ScoresExplorationCostsAlongASearchThroughALabyrinth) {
-  Config config;
+// The committed LSP network's scores along one run through world 'seed' of 'kind', a sample every 'every' steps.
+SubgoalEval ScoreCommittedNetwork(const Config& config, core::WorldKind kind, uint64_t seed, int every) {
   LearnedSensorOptions model;
   model.model = TOPONAV_SOURCE_DIR "/models/lsp_net_cpu.pt";
   SubgoalEvalOptions o;
-  o.kind = core::WorldKind::kLabyrinth;
-  o.seeds = {4001};
-  o.every = 25;
+  o.kind = kind;
+  o.seeds = {seed};
+  o.every = every;
   const SubgoalEval e = EvaluateSubgoalEstimates(config, model, o);
   EXPECT_EQ(e.worlds, 1);
-  ASSERT_GT(e.examples, 0);
-  ASSERT_GT(e.cells, 0u);
+  EXPECT_GT(e.examples, 0);
+  EXPECT_GT(e.cells, 0u);
+  return e;
+}
+
+TEST(SubgoalEval, ScoresExplorationCostsAlongASearchThroughALabyrinth) {
+  const SubgoalEval e = ScoreCommittedNetwork(Config{}, core::WorldKind::kLabyrinth, 4001, 25);
   EXPECT_EQ(e.positives, 0u) << "the goal is where the agent stands: no frontier leads to it";
   EXPECT_GT(e.exploration_truth, 0.0);
   EXPECT_GT(e.exploration_mae, 0.0);
@@ -51,15 +56,7 @@ TEST(SubgoalEval, ScoresExplorationCostsAlongASearchThroughALabyrinth) {
 TEST(SubgoalEval, ScoresTheCommittedNetworkOnAMaze) {
   Config config;
   config.planning.frontier_row_gap = 10;
-  LearnedSensorOptions model;
-  model.model = TOPONAV_SOURCE_DIR "/models/lsp_net_cpu.pt";
-  SubgoalEvalOptions o;
-  o.seeds = {7003};
-  o.every = 10;
-  const SubgoalEval e = EvaluateSubgoalEstimates(config, model, o);
-  EXPECT_EQ(e.worlds, 1);
-  ASSERT_GT(e.examples, 0);
-  ASSERT_GT(e.cells, 0u);
+  const SubgoalEval e = ScoreCommittedNetwork(config, core::WorldKind::kGuidedMaze, 7003, 10);
   EXPECT_LE(e.positives, e.cells);
   EXPECT_GE(e.auc, 0.0);
   EXPECT_LE(e.auc, 1.0);
@@ -73,8 +70,12 @@ TEST(SubgoalEval, ScoresTheCommittedNetworkOnAMaze) {
     EXPECT_GE(p, 0.0);
     EXPECT_LE(p, 1.0);
   }
-  model.model = TOPONAV_SOURCE_DIR "/models/vertex_net_cpu.pt";
-  EXPECT_THROW(EvaluateSubgoalEstimates(config, model, o), core::ConfigError) << "a vertex model has no subgoal cells";
+  LearnedSensorOptions vertex_model;
+  vertex_model.model = TOPONAV_SOURCE_DIR "/models/vertex_net_cpu.pt";
+  SubgoalEvalOptions o;
+  o.seeds = {7003};
+  EXPECT_THROW(EvaluateSubgoalEstimates(config, vertex_model, o), core::ConfigError)
+      << "a vertex model has no subgoal cells";
 }
 
 }  // namespace
