@@ -1,5 +1,7 @@
 #include "experiments/subgoal_data.h"
 
+#include <utility>
+
 #include "core/error.h"
 #include "experiments/navigation_trial.h"
 #include "experiments/trial.h"
@@ -36,8 +38,8 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& world, const
     const auto visible = [&](const core::Vec2& q) {
       return core::Contains(seen, q) || core::NearRing(q, seen, kSeenMargin);
     };
-    SubgoalSample s{world.seed, state.step, pose,
-                    goal,       0,          planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible)};
+    planning::SubgoalLabelGrid labels = planning::RasterizeSubgoalLabels(sg, p, pose, grid, visible);
+    SubgoalSample s{world.seed, state.step, pose, goal, 0, std::move(labels)};
     for (size_t f = 0; f < frontiers.size(); ++f)
       for (int c : sg.cells(f))
         if (visible(sg.raster().Center(c))) {

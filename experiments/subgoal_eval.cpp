@@ -81,8 +81,10 @@ struct Tally {
       band.push_back(range < SubgoalEval::kBandEdges[0] ? 0 : range < SubgoalEval::kBandEdges[1] ? 1 : 2);
       cross_entropy -= y ? std::log(p) : std::log(1.0 - p);
       (y ? ps_pos : ps_neg) += p;
-      if (y) success += std::abs(out.at(r, c, cs) - truth.delta_success[i]);
-      if (y) continue;
+      if (y) {
+        success += std::abs(out.at(r, c, cs) - truth.delta_success[i]);
+        continue;
+      }
       const double estimate = out.at(r, c, ce);
       exploration += std::abs(estimate - truth.exploration[i]);
       truth_sum += truth.exploration[i], estimate_sum += estimate;

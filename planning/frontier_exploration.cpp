@@ -21,8 +21,8 @@ void EstimateExploration(const mapping::MapView& view, const core::Vec2& agent, 
   if (frontiers.empty() || frontiers.size() != targets->size()) return;
   const SubgoalGrid grid(view, frontiers, agent, agent, cell, region);  // the goal at the agent: in known space
   const std::vector<SubgoalProperties> estimates = estimator.Estimate(grid, ProblemWithoutDistances(frontiers.size()));
-  TOPONAV_CHECK(estimates.size() == targets->size(), estimates.size()
-                                                         << " estimates for " << targets->size() << " targets");
+  TOPONAV_CHECK(estimates.size() == targets->size(),
+                estimates.size() << " estimates for " << targets->size() << " targets");
   for (size_t i = 0; i < targets->size(); ++i) (*targets)[i].exploration = Clamped(estimates[i]).exploration;
 }
 
