@@ -191,7 +191,8 @@ int RunTrialCommand(const TrialArgs& a) {
   std::string plan_targets;
   std::vector<std::string> plan_goals;
   if (trace.is_open())
-    t.on_plan = [&](const std::vector<planning::FrontierTarget>& targets, const std::vector<planning::FrontierChoice>& choices) {
+    t.on_plan = [&](const experiments::LoopState&, const std::vector<planning::FrontierTarget>& targets,
+                    const std::vector<planning::FrontierChoice>& choices) {
       plan_targets = std::to_string(targets.size());
       plan_goals.clear();
       for (const auto& c : choices)

@@ -126,8 +126,7 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
   }
   choices_ = planner_->Plan(problem);
   commitment_.Apply(graph, targets_, problem.agents, &choices_);
-  if (on_plan) on_plan(targets_, choices_);
-  if (on_targets) on_targets(state, targets_);
+  if (on_plan) on_plan(state, targets_, choices_);
   if (Ended(targets_, view)) return false;
   CountDwelling(state, problem.agents);
   for (size_t a = 0; a < choices_.size(); ++a)

@@ -38,9 +38,13 @@ class SearchPolicy : public AgentPolicy {
   sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& step, sim::MotionSim& motion,
                             core::Rng& rng) override;
 
-  // Called every step before agents move with the frontier targets on offer and each agent's choice (traces).
-  std::function<void(const std::vector<planning::FrontierTarget>&, const std::vector<planning::FrontierChoice>&)> on_plan;
-  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_targets;  // the same
+  // Called every step before agents move with the loop's state, the frontier targets on offer and each agent's
+  // choice (traces, training data).
+  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&,
+                     const std::vector<planning::FrontierChoice>&)>
+      on_plan;
+  // Whether the sensor must tell a goal-conditioned network the goal is at the agent (the learned estimate).
+  bool wants_goal_at_agent() const { return cells_ != nullptr; }
 
   bool explored() const { return explored_; }
   const std::string& end_reason() const { return end_reason_; }  // "explored", "unreachable", "step_cap"

@@ -59,7 +59,8 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& world, const
     o.max_steps = config.bench.max_steps;
     o.mcmc_every = config.bench.mcmc_every;
     o.open_world_mcmc_every = config.open_world.mcmc_every;
-    o.on_targets = sample;
+    o.on_plan = [&](const LoopState& state, const std::vector<planning::FrontierTarget>& targets,
+                    const std::vector<planning::FrontierChoice>&) { sample(state, targets); };
     RunSearchTrial(world, config, o, seed);
   }
   return out;

@@ -49,12 +49,11 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   const bool open_world = !world.has_boundary();
   SearchPolicy policy(world, config, o.num_agents);
   policy.on_plan = o.on_plan;
-  policy.on_targets = o.on_targets;
   LoopOptions lo;
   lo.num_agents = o.num_agents;
   lo.max_steps = o.max_steps;
   lo.on_step = o.on_step;
-  lo.goal_at_agent = o.num_agents == 1 && config.search.exploration_estimate == "learned";
+  lo.goal_at_agent = policy.wants_goal_at_agent();
   // MCMC cadence; open worlds spread the same proposals per step over more frequent calls.
   lo.mcmc_every = o.mcmc_every > 0 && open_world ? o.open_world_mcmc_every : o.mcmc_every;
   if (o.mcmc_every > 0)

@@ -25,10 +25,10 @@ struct TrialOptions {
   // Called after every step with the map the planners used and the agents' paths so far, and once more
   // with the final map the metrics score (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
-  // Called every step before agents move with the frontier targets on offer and each agent's choice (traces).
-  std::function<void(const std::vector<planning::FrontierTarget>&, const std::vector<planning::FrontierChoice>&)> on_plan;
-  // The same moment with the loop's state and the frontier targets alone (training data).
-  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_targets;
+  // SearchPolicy::on_plan: every step before agents move (traces, training data).
+  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&,
+                     const std::vector<planning::FrontierChoice>&)>
+      on_plan;
 };
 
 struct TrialResult {
