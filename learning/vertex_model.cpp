@@ -2,6 +2,7 @@
 
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -18,6 +19,8 @@ using nlohmann::json;
 namespace {
 
 constexpr const char* kFormat = "toponav-vertex-net-1";
+// Every key Save writes; Load refuses others.
+constexpr const char* kMetadataKeys[] = {"format", "width", "positive_weight", "vertex_weight", "subgoal", "notes"};
 constexpr const char* kMetadataKey = "toponav_metadata";
 
 torch::Tensor ImageTensor(const core::Panorama& p) {
@@ -288,6 +291,12 @@ VertexModel VertexModel::Load(const std::string& path, const std::string& device
   } catch (const std::exception& e) {
     throw core::DataError(path, std::string("not a toponav vertex-network file (") + e.what() + ")");
   }
+  // A key this build does not know may change what the outputs mean: refuse it rather than read the model
+  // under the old meaning.
+  for (const auto& item : meta.items())
+    if (std::find(std::begin(kMetadataKeys), std::end(kMetadataKeys), item.key()) == std::end(kMetadataKeys))
+      throw core::DataError(path, "its metadata has the key '" + item.key() +
+                                      "', unknown to this toponav build (a newer one wrote it): rebuild toponav");
   VertexNetOptions o;
   o.width = meta.value("width", 1.0);
   o.positive_weight = meta.value("positive_weight", 8.0);

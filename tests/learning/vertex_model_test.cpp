@@ -100,9 +100,9 @@ TEST(VertexModel, SaveAndLoadGiveIdenticalOutputs) {
   fs::remove(path);
 }
 
-TEST(VertexModel, AMissingTruncatedForeignOrMismatchedFileIsADataErrorNamingIt) {
+TEST(VertexModel, AMissingTruncatedForeignMismatchedOrNewerFileIsADataErrorNamingIt) {
   const std::string good = TempFile("good.pt"), cut = TempFile("cut.pt"), text = TempFile("text.pt"),
-                    lying = TempFile("lying.pt");
+                    lying = TempFile("lying.pt"), newer = TempFile("newer.pt");
   VertexModel(Tiny(), 4).Save(good);
   fs::copy_file(good, cut, fs::copy_options::overwrite_existing);
   fs::resize_file(cut, fs::file_size(good) / 2);
@@ -114,9 +114,18 @@ TEST(VertexModel, AMissingTruncatedForeignOrMismatchedFileIsADataErrorNamingIt) 
     archive.write("toponav_metadata", c10::IValue(std::string(R"({"format": "toponav-vertex-net-1", "width": 0.25})")));
     archive.save_to(lying);
   }
+  {  // a key a later build may write to change what the outputs mean
+    internal::VertexNet net(0.25);
+    torch::serialize::OutputArchive archive;
+    net->save(archive);
+    archive.write("toponav_metadata",
+                  c10::IValue(std::string(R"({"format": "toponav-vertex-net-1", "width": 0.25, "log_costs": true})")));
+    archive.save_to(newer);
+  }
   for (const auto& [path, words] : std::vector<std::pair<std::string, std::string>>{
            {TempFile("missing.pt"), "no such model file"}, {cut, "not a readable model file"},
-           {text, "not a readable model file"}, {lying, "do not fit the architecture"}}) {
+           {text, "not a readable model file"}, {lying, "do not fit the architecture"},
+           {newer, "the key 'log_costs', unknown to this toponav build"}}) {
     try {
       VertexModel::Load(path);
       ADD_FAILURE() << path << " loaded";
@@ -125,7 +134,7 @@ TEST(VertexModel, AMissingTruncatedForeignOrMismatchedFileIsADataErrorNamingIt) 
       EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
     }
   }
-  for (const auto& p : {good, cut, text, lying}) fs::remove(p);
+  for (const auto& p : {good, cut, text, lying, newer}) fs::remove(p);
 }
 
 }  // namespace
