@@ -38,6 +38,7 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
       {"inspect_bend", &O::inspect_bend, 0.0, 1.5},
       {"inspect_standoff", &O::inspect_standoff, 0.1, 1000.0},
       {"inspect_unwalled", &O::inspect_unwalled, 0, 1000000},
+      {"dropped_wall_steps", &O::dropped_wall_steps, 0, 100000},
   };
   return fields;
 }

@@ -89,6 +89,9 @@ struct SearchOptions {
                                   // one a single wall reaches with known space all round it, and each
                                   // rejected vertex with at least this many detections off every map wall
                                   // (planning::UnwalledVertices: a hollow building's corners); 0: off
+  int dropped_wall_steps = 0;     // > 0: a frontier lying along a wall the map held for this many steps and
+                                  // has left out since (planning::DroppedWalls: 80 % of it within 1.5 units)
+                                  // is taken for that wall, no target; 0: off
   // What the tour (search.tour, one agent) knows of the space past each frontier
   // (planning/frontier_exploration.h): "none" (every frontier alike), "learned" (the exploration cost a
   // subgoal network -- sensor.subgoal_model, or the sensor's model itself, trained with train.subgoal on

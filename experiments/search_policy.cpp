@@ -62,6 +62,7 @@ std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapVi
   std::vector<planning::FrontierTarget> targets;
   for (const auto& t : planning::FrontierTargets(view, planning_))
     if (!given_up_.Contains(t.frontier_id) && (!region_ || region_->Contains(t.point))) targets.push_back(t);
+  if (search_.dropped_wall_steps > 0) targets = NotAlongDroppedWalls(view, targets);
   if (!search_.close_buildings || !region_) return targets;
   // Open worlds: a building's last side is no target.
   const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(view, targets);
@@ -69,6 +70,17 @@ std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapVi
   for (size_t i = 0; i < targets.size(); ++i)
     if (!planning::ClosesWallChain(*frontiers[i], view, planning_)) open.push_back(targets[i]);
   return open;
+}
+
+std::vector<planning::FrontierTarget> SearchPolicy::NotAlongDroppedWalls(
+    const mapping::MapView& view, const std::vector<planning::FrontierTarget>& targets) {
+  dropped_walls_.Update(view.walls);
+  const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(view, targets);
+  std::vector<planning::FrontierTarget> kept;
+  for (size_t i = 0; i < targets.size(); ++i)
+    if (!dropped_walls_.TakenForWall(*frontiers[i], view.walls, search_.dropped_wall_steps))
+      kept.push_back(targets[i]);
+  return kept;
 }
 
 bool SearchPolicy::Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view) {
@@ -94,7 +106,8 @@ bool SearchPolicy::Ended(const std::vector<planning::FrontierTarget>& targets, c
 // walking along or through a frontier toward its pushed-through target is still finding out what is behind).
 void SearchPolicy::CountDwelling(const LoopState& state, const std::vector<Vec2>& agents) {
   std::vector<char> standing;
-  for (const auto& trail : *state.trails) standing.push_back(planning::FrontierDwell::Standing(trail, state.step_length));
+  for (const auto& trail : *state.trails)
+    standing.push_back(planning::FrontierDwell::Standing(trail, state.step_length));
   // Inspection targets are the inspector's to retire.
   std::vector<planning::FrontierTarget> frontiers, before;
   for (size_t i = 0; i < targets_.size(); ++i)

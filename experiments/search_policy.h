@@ -8,9 +8,11 @@
 // for search.unreachable_steps steps ("unreachable").  With search.block_when_stuck, where an agent's steps make
 // no headway along its path the planners get a short wall across its way (planning::MotionBlocks); with
 // search.close_buildings, in open worlds a building's last side (planning::ClosesWallChain) is no target; with
-// search.inspect_bend and search.inspect_unwalled, once no frontier is left agents look from close by at the
-// map vertices that walls run straight through and (open worlds) those the map lacks walls for
-// (planning::VertexInspector) before the search ends, those they can reach and look from within the steps left.
+// search.dropped_wall_steps, neither is a frontier along a wall the map held and has left out since
+// (planning::DroppedWalls); with search.inspect_bend and search.inspect_unwalled, once no frontier is left
+// agents look from close by at the map vertices that walls run straight through and (open worlds) those the
+// map lacks walls for (planning::VertexInspector) before the search ends, those they can reach and look from
+// within the steps left.
 // With search.exploration_estimate, one agent's tour knows what lies past each frontier
 // (planning/frontier_exploration.h).
 #include <functional>
@@ -21,6 +23,7 @@
 
 #include "experiments/agent_loop.h"
 #include "planning/cell_estimator.h"
+#include "planning/dropped_walls.h"
 #include "planning/given_up_frontiers.h"
 #include "planning/lsp_planner.h"
 #include "planning/motion_blocks.h"
@@ -56,6 +59,10 @@ class SearchPolicy : public AgentPolicy {
 
  private:
   std::vector<planning::FrontierTarget> Targets(const mapping::MapView& view);
+  // Updates the walls the map has held (search.dropped_wall_steps) and keeps the targets whose frontiers do not
+  // lie along ones it has left out since.
+  std::vector<planning::FrontierTarget> NotAlongDroppedWalls(const mapping::MapView& view,
+                                                             const std::vector<planning::FrontierTarget>& targets);
   bool Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view);
   void CountDwelling(const LoopState& state, const std::vector<core::Vec2>& agents);
   void ObserveCells(const LoopState& state);  // "learned": this step's network outputs to the estimator
@@ -65,6 +72,7 @@ class SearchPolicy : public AgentPolicy {
   std::optional<core::Aabb2> region_;  // open worlds: the search region (the world's bounds)
   std::unique_ptr<planning::Planner> planner_;
   planning::GivenUpFrontiers given_up_;
+  planning::DroppedWalls dropped_walls_;  // search.dropped_wall_steps
   planning::FrontierDwell dwell_;
   planning::FrontierCommitment commitment_;
   planning::StuckMonitor stuck_;

@@ -177,6 +177,9 @@ TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   EXPECT_FALSE(c.search.block_when_stuck);
   EXPECT_FALSE(c.search.close_buildings);
   EXPECT_TRUE(ParseConfig("search:\n  close_buildings: true\n", "x.yaml").search.close_buildings);
+  EXPECT_EQ(c.search.dropped_wall_steps, 0) << "off unless set";
+  EXPECT_EQ(ParseConfig("search:\n  dropped_wall_steps: 10\n", "x.yaml").search.dropped_wall_steps, 10);
+  EXPECT_EQ(ErrorOf("search:\n  dropped_wall_steps: -1\n").key(), "search.dropped_wall_steps");
   EXPECT_EQ(c.search.unreachable_steps, 9);
   EXPECT_DOUBLE_EQ(c.search.switch_ratio, 2.0);
   EXPECT_DOUBLE_EQ(c.search.push_distance, SearchOptions{}.push_distance) << "unset keys keep their defaults";
