@@ -62,24 +62,17 @@ std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapVi
   std::vector<planning::FrontierTarget> targets;
   for (const auto& t : planning::FrontierTargets(view, planning_))
     if (!given_up_.Contains(t.frontier_id) && (!region_ || region_->Contains(t.point))) targets.push_back(t);
-  if (search_.dropped_wall_steps > 0) targets = NotAlongDroppedWalls(view, targets);
-  if (!search_.close_buildings || !region_) return targets;
-  // Open worlds: a building's last side is no target.
-  const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(view, targets);
-  std::vector<planning::FrontierTarget> open;
-  for (size_t i = 0; i < targets.size(); ++i)
-    if (!planning::ClosesWallChain(*frontiers[i], view, planning_)) open.push_back(targets[i]);
-  return open;
-}
-
-std::vector<planning::FrontierTarget> SearchPolicy::NotAlongDroppedWalls(
-    const mapping::MapView& view, const std::vector<planning::FrontierTarget>& targets) {
-  dropped_walls_.Update(view.walls);
+  const bool dropped = search_.dropped_wall_steps > 0, close = search_.close_buildings && region_;
+  if (dropped) dropped_walls_.Update(view.walls);
+  if (!dropped && !close) return targets;
+  // A frontier along a wall the map dropped, and in open worlds a building's last side, is no target.
   const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(view, targets);
   std::vector<planning::FrontierTarget> kept;
-  for (size_t i = 0; i < targets.size(); ++i)
-    if (!dropped_walls_.TakenForWall(*frontiers[i], view.walls, search_.dropped_wall_steps))
-      kept.push_back(targets[i]);
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (dropped && dropped_walls_.TakenForWall(*frontiers[i], view.walls, search_.dropped_wall_steps)) continue;
+    if (close && planning::ClosesWallChain(*frontiers[i], view, planning_)) continue;
+    kept.push_back(targets[i]);
+  }
   return kept;
 }
 

@@ -59,10 +59,6 @@ class SearchPolicy : public AgentPolicy {
 
  private:
   std::vector<planning::FrontierTarget> Targets(const mapping::MapView& view);
-  // Updates the walls the map has held (search.dropped_wall_steps) and keeps the targets whose frontiers do not
-  // lie along ones it has left out since.
-  std::vector<planning::FrontierTarget> NotAlongDroppedWalls(const mapping::MapView& view,
-                                                             const std::vector<planning::FrontierTarget>& targets);
   bool Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view);
   void CountDwelling(const LoopState& state, const std::vector<core::Vec2>& agents);
   void ObserveCells(const LoopState& state);  // "learned": this step's network outputs to the estimator
