@@ -12,6 +12,7 @@
 #include "experiments/cli/common.h"
 #include "experiments/cli_parse.h"
 #include "experiments/experiments.h"
+#include "experiments/map_json.h"
 #include "sim/sim.h"
 
 namespace toponav::cli {
@@ -216,6 +217,7 @@ int RunRecordedMap(const MapArgs& a) {
   j["mean_observe_ms"] = r.mean_observe_ms;
   j["mean_update_ms"] = r.mean_update_ms;
   j["wall_time_ms"] = ms;
+  j["map"] = experiments::MapGeometryJson(r.view);
   WriteTextFile((fs::path(a.out) / "map.json").string(), j.dump(1) + "\n");
   fmt::print("{} frames: vertices {}  walls {}  frontiers {}{}  detect {:.1f} ms/frame  map {:.1f} ms/frame  total {:.1f} s -> {}/map.png, map.json\n",
              r.frames, r.view.vertices.size(), r.view.walls.size(), r.view.frontiers.size(),
@@ -244,6 +246,7 @@ nlohmann::json MapDriveJson(uint64_t seed, const experiments::MapDriveResult& r,
   j["mean_update_ms"] = r.mean_update_ms;
   j["mean_mcmc_ms"] = r.mean_mcmc_ms;
   j["wall_time_ms"] = ms;
+  j["map"] = experiments::MapGeometryJson(r.view);
   return j;
 }
 

@@ -255,6 +255,13 @@ string(JSON recvertices GET "${recmap}" map_vertices)
 if(recvertices LESS 3 OR NOT EXISTS ${WORK}/recmap/map.png)
   message(FATAL_ERROR "map --images built ${recvertices} vertices (or no map.png)")
 endif()
+# map.json carries the map itself: one entry per map vertex, and walls between them
+string(JSON listed LENGTH "${recmap}" map vertices)
+string(JSON walls LENGTH "${recmap}" map walls)
+string(JSON first_wall_end GET "${recmap}" map walls 0 to 1)
+if(NOT listed EQUAL recvertices OR walls LESS 1 OR first_wall_end STREQUAL "")
+  message(FATAL_ERROR "map.json lists ${listed} of ${recvertices} vertices and ${walls} walls")
+endif()
 # a recording whose poses file is broken: the file and line are named
 file(WRITE ${WORK}/rec/bad.csv "image,x,y,yaw\npano_00000.png,1,two,0\n")
 run(1 ${TOPONAV} map --images ${WORK}/rec --poses ${WORK}/rec/bad.csv --model ${MODEL} --out ${WORK}/recbad)
