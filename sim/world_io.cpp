@@ -92,6 +92,45 @@ std::string WorldToJson(const World& w) {
   return j.dump(1) + "\n";
 }
 
+namespace {
+
+// The world's "clutter" list.
+std::vector<core::Clutter> ClutterFromJson(Reader& r, const json& cl) {
+  if (!cl.is_array()) r.Fail("clutter", "expected a list");
+  std::vector<core::Clutter> out;
+  for (size_t i = 0; i < cl.size(); ++i) {
+    const std::string where = "clutter[" + std::to_string(i) + "]";
+    r.OnlyKeys(cl[i], {"shape", "center", "size", "yaw", "height"}, where);
+    core::Clutter c;
+    const json& shape = r.Key(cl[i], "shape", where);
+    if (!shape.is_string() || !core::ParseClutterShape(shape.get<std::string>()))
+      r.Fail(where + ".shape", "expected box, cylinder or tree");
+    c.shape = *core::ParseClutterShape(shape.get<std::string>());
+    c.center = r.Point(r.Key(cl[i], "center", where), where + ".center");
+    c.size = r.Number(r.Key(cl[i], "size", where), where + ".size");
+    if (cl[i].contains("yaw")) c.yaw = r.Number(cl[i]["yaw"], where + ".yaw");
+    if (cl[i].contains("height")) c.height = r.Number(cl[i]["height"], where + ".height");
+    if (c.size <= 0) r.Fail(where + ".size", "must be > 0");
+    out.push_back(c);
+  }
+  return out;
+}
+
+// "bounds" when given; by default everything the map, the start and the goal touch, grown by 10 units.
+core::Aabb2 BoundsFromJson(Reader& r, const json& j, const World& w) {
+  if (j.contains("bounds")) {
+    r.OnlyKeys(j["bounds"], {"min", "max"}, "bounds");
+    return {r.Point(r.Key(j["bounds"], "min", "bounds"), "bounds.min"),
+            r.Point(r.Key(j["bounds"], "max", "bounds"), "bounds.max")};
+  }
+  core::Aabb2 b = core::Bounds(core::MapVertices(w), core::Bounds(std::vector<Vec2>{w.start.position(), w.goal}));
+  b.min = b.min - Vec2{10, 10};
+  b.max = b.max + Vec2{10, 10};
+  return b;
+}
+
+}  // namespace
+
 World WorldFromJson(const std::string& text, const std::string& source) {
   json j;
   try {
@@ -119,25 +158,7 @@ World WorldFromJson(const std::string& text, const std::string& source) {
   if (!obstacles.is_array()) r.Fail("obstacles", "expected a list of polygons");
   for (size_t i = 0; i < obstacles.size(); ++i)
     w.obstacles.push_back(r.RingOf(obstacles[i], "obstacles[" + std::to_string(i) + "]"));
-  if (j.contains("clutter")) {
-    const json& cl = j["clutter"];
-    if (!cl.is_array()) r.Fail("clutter", "expected a list");
-    for (size_t i = 0; i < cl.size(); ++i) {
-      const std::string where = "clutter[" + std::to_string(i) + "]";
-      r.OnlyKeys(cl[i], {"shape", "center", "size", "yaw", "height"}, where);
-      core::Clutter c;
-      const json& shape = r.Key(cl[i], "shape", where);
-      if (!shape.is_string() || !core::ParseClutterShape(shape.get<std::string>()))
-        r.Fail(where + ".shape", "expected box, cylinder or tree");
-      c.shape = *core::ParseClutterShape(shape.get<std::string>());
-      c.center = r.Point(r.Key(cl[i], "center", where), where + ".center");
-      c.size = r.Number(r.Key(cl[i], "size", where), where + ".size");
-      if (cl[i].contains("yaw")) c.yaw = r.Number(cl[i]["yaw"], where + ".yaw");
-      if (cl[i].contains("height")) c.height = r.Number(cl[i]["height"], where + ".height");
-      if (c.size <= 0) r.Fail(where + ".size", "must be > 0");
-      w.clutter.push_back(c);
-    }
-  }
+  if (j.contains("clutter")) w.clutter = ClutterFromJson(r, j["clutter"]);
   const json& start = r.Key(j, "start", "");
   r.OnlyKeys(start, {"x", "y", "yaw"}, "start");
   w.start = {r.Number(r.Key(start, "x", "start"), "start.x"), r.Number(r.Key(start, "y", "start"), "start.y"),
@@ -145,15 +166,7 @@ World WorldFromJson(const std::string& text, const std::string& source) {
   w.goal = r.Point(r.Key(j, "goal", ""), "goal");
   if (j.contains("guide_path")) w.guide_path = r.RingOf(j["guide_path"], "guide_path");
   if (j.contains("guide_path_width")) w.guide_path_width = r.Number(j["guide_path_width"], "guide_path_width");
-  if (j.contains("bounds")) {
-    r.OnlyKeys(j["bounds"], {"min", "max"}, "bounds");
-    w.bounds = {r.Point(r.Key(j["bounds"], "min", "bounds"), "bounds.min"),
-                r.Point(r.Key(j["bounds"], "max", "bounds"), "bounds.max")};
-  } else {  // default: everything the map touches, grown by 10 units
-    w.bounds = core::Bounds(core::MapVertices(w), core::Bounds(std::vector<Vec2>{w.start.position(), w.goal}));
-    w.bounds.min = w.bounds.min - Vec2{10, 10};
-    w.bounds.max = w.bounds.max + Vec2{10, 10};
-  }
+  w.bounds = BoundsFromJson(r, j, w);
   // Hand-written files may use either orientation: normalise to counter-clockwise.
   if (!w.boundary.empty() && core::SignedArea(w.boundary) < 0) core::Reverse(w.boundary);
   for (auto& o : w.obstacles)

@@ -335,11 +335,13 @@ World GenerateOfficePark(const OfficeParkOptions& o, uint64_t seed) {
   return w;
 }
 
-World GenerateGuidedMaze(const GuidedMazeOptions& o, uint64_t seed) {
-  Rng rng(seed);
-  const int nx = o.cells_x, ny = o.cells_y;
+namespace {
+
+using MazeTree = std::vector<std::vector<int>>;  // per cell (y * nx + x): the cells it opens onto
+
+// Randomized Kruskal over all walls between adjacent cells of an nx x ny grid: a spanning tree.
+MazeTree KruskalMaze(int nx, int ny, Rng& rng) {
   auto id = [&](int x, int y) { return y * nx + x; };
-  // Randomized Kruskal over all walls between adjacent cells.
   std::vector<std::array<int, 2>> walls;
   for (int y = 0; y < ny; ++y)
     for (int x = 0; x < nx; ++x) {
@@ -353,7 +355,7 @@ World GenerateGuidedMaze(const GuidedMazeOptions& o, uint64_t seed) {
     while (parent[size_t(a)] != a) a = parent[size_t(a)] = parent[size_t(parent[size_t(a)])];
     return a;
   };
-  std::vector<std::vector<int>> adj(size_t(nx * ny));
+  MazeTree adj(size_t(nx * ny));
   for (const auto& wl : walls) {
     const int a = find(wl[0]), b = find(wl[1]);
     if (a == b) continue;
@@ -361,11 +363,12 @@ World GenerateGuidedMaze(const GuidedMazeOptions& o, uint64_t seed) {
     adj[size_t(wl[0])].push_back(wl[1]);
     adj[size_t(wl[1])].push_back(wl[0]);
   }
-  const int start = rng.UniformInt(0, nx * ny - 1);
-  int goal = rng.UniformInt(0, nx * ny - 2);
-  if (goal >= start) ++goal;
-  // The unique tree route start -> goal (BFS parents).
-  std::vector<int> from(size_t(nx * ny), -1);
+  return adj;
+}
+
+// The unique tree route start -> goal (BFS parents).
+std::vector<int> TreeRoute(const MazeTree& adj, int start, int goal) {
+  std::vector<int> from(adj.size(), -1);
   std::vector<int> queue{start};
   from[size_t(start)] = start;
   for (size_t q = 0; q < queue.size(); ++q)
@@ -377,19 +380,25 @@ World GenerateGuidedMaze(const GuidedMazeOptions& o, uint64_t seed) {
   std::vector<int> route{goal};
   while (route.back() != start) route.push_back(from[size_t(route.back())]);
   std::reverse(route.begin(), route.end());
-  // Geometry: refined grid lines border | cell | wall | cell | ... | cell | border.
+  return route;
+}
+
+// Refined grid lines along one axis: border | cell | wall | cell | ... | cell | border.
+std::vector<double> MazeLines(const GuidedMazeOptions& o, int cells) {
   const double pitch = o.corridor_width + o.wall_thickness;
-  auto lines_for = [&](int cells) {
-    std::vector<double> l{0.0};
-    for (int i = 0; i < cells; ++i) {
-      l.push_back(o.border + i * pitch);
-      l.push_back(o.border + i * pitch + o.corridor_width);
-    }
-    l.push_back(l.back() + o.border);
-    return l;
-  };
-  const std::vector<double> xs = lines_for(nx), ys = lines_for(ny);
-  const int fx = int(xs.size()) - 1, fy = int(ys.size()) - 1;
+  std::vector<double> l{0.0};
+  for (int i = 0; i < cells; ++i) {
+    l.push_back(o.border + i * pitch);
+    l.push_back(o.border + i * pitch + o.corridor_width);
+  }
+  l.push_back(l.back() + o.border);
+  return l;
+}
+
+// Free tiles of the refined grid (fx x fy tiles between the lines): every cell, and the wall tiles the tree
+// opens.
+std::vector<char> MazeTiles(const MazeTree& adj, int nx, int fx, int fy) {
+  auto id = [&](int x, int y) { return y * nx + x; };
   auto connected = [&](int a, int b) { return std::find(adj[size_t(a)].begin(), adj[size_t(a)].end(), b) != adj[size_t(a)].end(); };
   std::vector<char> fine(size_t(fx) * fy, 0);
   for (int ty = 1; ty < fy - 1; ++ty)
@@ -402,18 +411,33 @@ World GenerateGuidedMaze(const GuidedMazeOptions& o, uint64_t seed) {
       else if (cell_x && !cell_y) f = connected(id(cx, cy), id(cx, cy + 1));
       fine[size_t(ty) * fx + tx] = f;
     }
+  return fine;
+}
+
+}  // namespace
+
+World GenerateGuidedMaze(const GuidedMazeOptions& o, uint64_t seed) {
+  Rng rng(seed);
+  const int nx = o.cells_x, ny = o.cells_y;
+  const MazeTree adj = KruskalMaze(nx, ny, rng);
+  const int start = rng.UniformInt(0, nx * ny - 1);
+  int goal = rng.UniformInt(0, nx * ny - 2);
+  if (goal >= start) ++goal;
+  const std::vector<double> xs = MazeLines(o, nx), ys = MazeLines(o, ny);
+  const int fx = int(xs.size()) - 1, fy = int(ys.size()) - 1;
   World w;
   w.kind = core::WorldKind::kGuidedMaze;
   w.seed = seed;
-  TOPONAV_CHECK(internal::SplitBoundaryAndObstacles(internal::TraceFreeRegion(xs, ys, fine), &w.boundary,
-                                                    &w.obstacles),
+  TOPONAV_CHECK(internal::SplitBoundaryAndObstacles(internal::TraceFreeRegion(xs, ys, MazeTiles(adj, nx, fx, fy)),
+                                                    &w.boundary, &w.obstacles),
                 "maze free space is not connected");
   w.bounds = core::Bounds(w.boundary);  // the free space's extent (as in the labyrinth), not the outer border's
+  const double pitch = o.corridor_width + o.wall_thickness;
   auto center = [&](int c) {
     const int x = c % nx, y = c / nx;
     return Vec2{o.border + x * pitch + o.corridor_width / 2, o.border + y * pitch + o.corridor_width / 2};
   };
-  for (int c : route) w.guide_path.push_back(center(c));
+  for (int c : TreeRoute(adj, start, goal)) w.guide_path.push_back(center(c));
   w.guide_path_width = o.guide_path_width;
   const Vec2 s = center(start);
   w.start = {s.x, s.y, rng.Uniform(-kPi, kPi)};

@@ -163,6 +163,18 @@ struct RayCaster::Impl {
     }
     return false;
   }
+
+  // One point of a visibility polygon: its angle from the viewpoint, and where along that ray it comes when the
+  // ray meets a vertex and a farther wall (0: before the vertex, 1: the vertex, 2: after it).
+  struct VisibilityEntry {
+    double angle;
+    int order;
+    Vec2 point;
+  };
+  // The visibility polygon's points that ring vertex i (map vertex 'ref') gives from p: the vertex, and where
+  // it is a tangent one, the farther wall the ray grazes on to.
+  void VisitVertex(const Vec2& p, const Ring& ring, size_t i, bool check_visible, const core::VertexRef& ref,
+                   std::vector<VisibilityEntry>* entries) const;
 };
 
 RayCaster::RayCaster(const core::World& world) : impl_(std::make_unique<Impl>()) {
@@ -263,66 +275,64 @@ std::vector<VisibleVertex> RayCaster::VisibleVertices(const core::Pose2& pose, d
   return out;
 }
 
+void RayCaster::Impl::VisitVertex(const Vec2& p, const Ring& ring, size_t i, bool check_visible,
+                                  const core::VertexRef& ref, std::vector<VisibilityEntry>* entries) const {
+  const Vec2 v = ring[i];
+  if (check_visible && !Sees(p, false, ref)) return;
+  const double dist = core::Distance(p, v);
+  if (dist < 1e-12) return;
+  const Vec2 dir = (v - p) / dist;
+  const double angle = std::atan2(dir.y, dir.x);
+  const Vec2 prev = ring[(i + ring.size() - 1) % ring.size()];
+  const Vec2 next = ring[(i + 1) % ring.size()];
+  const double sa = core::Cross(dir, prev - v), sb = core::Cross(dir, next - v);
+  if (!(sa * sb > 0)) {  // the ring continues on both sides of the ray: v itself is on the polygon
+    entries->push_back({angle, 1, v});
+    return;
+  }
+  // Tangent vertex: the ray grazes v and continues to a farther wall.
+  // Hits on v's own walls are rounding noise at v: step over them.
+  double tnear = dist * (1 + 1e-7) + 1e-7;
+  Hit h;
+  for (int guard = 0; guard < 16; ++guard) {
+    h = Intersect(p, dir, tnear, std::numeric_limits<double>::infinity(), kMaskWalls | kMaskFar);
+    if (!h.valid() || !IncidentToVertex(h, ref)) break;
+    tnear = h.t * (1 + 1e-6) + 1e-6;
+  }
+  if (!h.valid()) {
+    entries->push_back({angle, 1, v});
+    return;
+  }
+  const core::Segment2 s = HitSegment(h);
+  const double denom = core::Cross(dir, s.b - s.a);
+  const double t = std::abs(denom) > 1e-15 ? core::Cross(s.a - p, s.b - s.a) / denom : h.t;
+  const Vec2 far = p + dir * std::max(t, dist);
+  // Ring edges on the counter-clockwise side of the ray: sweeping counter-clockwise meets the far wall first.
+  if (sa > 0) {
+    entries->push_back({angle, 0, far});
+    entries->push_back({angle, 1, v});
+  } else {
+    entries->push_back({angle, 1, v});
+    entries->push_back({angle, 2, far});
+  }
+}
+
 Ring RayCaster::VisibilityPolygon(const Vec2& p) const {
   const Impl& m = *impl_;
   for (const auto& o : m.world.obstacles)
     if (core::Contains(o, p)) return o;
   if (m.world.has_boundary() && !core::Contains(m.world.boundary, p)) return {};
-  struct Entry {
-    double angle;
-    int order;
-    Vec2 point;
-  };
+  using Entry = Impl::VisibilityEntry;
   std::vector<Entry> entries;
-  auto visit = [&](const Ring& ring, size_t i, bool check_visible, const core::VertexRef& ref) {
-    const Vec2 v = ring[i];
-    if (check_visible && !m.Sees(p, false, ref)) return;
-    const double dist = core::Distance(p, v);
-    if (dist < 1e-12) return;
-    const Vec2 dir = (v - p) / dist;
-    const double angle = std::atan2(dir.y, dir.x);
-    const Vec2 prev = ring[(i + ring.size() - 1) % ring.size()];
-    const Vec2 next = ring[(i + 1) % ring.size()];
-    const double sa = core::Cross(dir, prev - v), sb = core::Cross(dir, next - v);
-    if (!(sa * sb > 0)) {  // the ring continues on both sides of the ray: v itself is on the polygon
-      entries.push_back({angle, 1, v});
-      return;
-    }
-    // Tangent vertex: the ray grazes v and continues to a farther wall.
-    // Hits on v's own walls are rounding noise at v: step over them.
-    double tnear = dist * (1 + 1e-7) + 1e-7;
-    Impl::Hit h;
-    for (int guard = 0; guard < 16; ++guard) {
-      h = m.Intersect(p, dir, tnear, std::numeric_limits<double>::infinity(), kMaskWalls | kMaskFar);
-      if (!h.valid() || !m.IncidentToVertex(h, ref)) break;
-      tnear = h.t * (1 + 1e-6) + 1e-6;
-    }
-    if (!h.valid()) {
-      entries.push_back({angle, 1, v});
-      return;
-    }
-    const core::Segment2 s = m.HitSegment(h);
-    const double denom = core::Cross(dir, s.b - s.a);
-    const double t = std::abs(denom) > 1e-15 ? core::Cross(s.a - p, s.b - s.a) / denom : h.t;
-    const Vec2 far = p + dir * std::max(t, dist);
-    // Ring edges on the counter-clockwise side of the ray: sweeping counter-clockwise meets the far wall first.
-    if (sa > 0) {
-      entries.push_back({angle, 0, far});
-      entries.push_back({angle, 1, v});
-    } else {
-      entries.push_back({angle, 1, v});
-      entries.push_back({angle, 2, far});
-    }
-  };
   for (size_t r = 0; r < m.rings.size(); ++r)
-    for (size_t i = 0; i < m.rings[r]->size(); ++i) visit(*m.rings[r], i, true, {int(r), int(i)});
+    for (size_t i = 0; i < m.rings[r]->size(); ++i) m.VisitVertex(p, *m.rings[r], i, true, {int(r), int(i)}, &entries);
   for (const auto& box : m.far_rings)
     for (size_t i = 0; i < box.size(); ++i) {
       // Far-box corners: visible unless a wall blocks the way.
       const Vec2 v = box[i];
       const double dist = core::Distance(p, v);
       if (m.Intersect(p, (v - p) / dist, 0.0, dist * (1 - 1e-9), kMaskWalls).valid()) continue;
-      visit(box, i, false, {-1, int(i)});
+      m.VisitVertex(p, box, i, false, {-1, int(i)}, &entries);
     }
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
     return a.angle != b.angle ? a.angle < b.angle : a.order < b.order;

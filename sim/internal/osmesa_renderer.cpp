@@ -304,6 +304,16 @@ struct Renderer::Impl {
   std::vector<uint32_t> taps;      // 4 per pixel
   std::vector<uint16_t> weights;   // 4 per pixel
   std::vector<uint32_t> nearest;   // 1 per pixel
+
+  // Selects the atlas attachments asked for by 'outputs' (a RenderOutput mask) and clears them.
+  void ClearTargets(int outputs) const;
+  // Draws the scene into the atlas's four 90-degree cube faces, looking from 'pose'.
+  void DrawFaces(const core::Pose2& pose, GLuint program) const;
+  // The atlas's colour, resampled bilinearly into the panorama.
+  void ReadRgb(Panorama* pano) const;
+  // Depth and ids: nearest source pixel (interpolating them would invent values between surfaces).
+  template <typename T>
+  void ReadNearest(std::vector<T>* out, GLenum attachment, GLenum format, GLenum type) const;
 };
 
 Renderer::Renderer(const core::World& world, const RenderOptions& options) : impl_(std::make_unique<Impl>()) {
@@ -361,16 +371,8 @@ Renderer::~Renderer() = default;
 const RenderOptions& Renderer::options() const { return impl_->options; }
 int Renderer::num_triangles() const { return int(impl_->scene.vertices.size() / 3); }
 
-Panorama Renderer::Render(const core::Pose2& pose, int outputs) const {
-  const Impl& m = *impl_;
-  ThreadGl& gl = ThreadGl::Get();
-  const int atlas_w = 4 * m.face_w, fh = m.face_h;
-  gl.BindFramebuffer(atlas_w, fh);
-  const GLuint vao = gl.SceneVao(m.serial, m.scene);
-  glUseProgram(gl.program());
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  const float sky[4] = {m.scene.sky[0], m.scene.sky[1], m.scene.sky[2], 1.f};
+void Renderer::Impl::ClearTargets(int outputs) const {
+  const float sky[4] = {scene.sky[0], scene.sky[1], scene.sky[2], 1.f};
   const float far_dist[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
   const GLint no_id[4] = {kNoObstacle, 0, 0, 0};
   // Write only the attachments that were asked for: the fragment cost is most of a panorama's time.
@@ -382,12 +384,14 @@ Panorama Renderer::Render(const core::Pose2& pose, int outputs) const {
   if (outputs & kRenderDepth) glClearBufferfv(GL_COLOR, 1, far_dist);
   if (outputs & kRenderIds) glClearBufferiv(GL_COLOR, 2, no_id);
   glClear(GL_DEPTH_BUFFER_BIT);
-  const float ex = float(pose.x), ey = float(pose.y), ez = float(m.options.camera_height);
-  glUniform3f(glGetUniformLocation(gl.program(), "cam"), ex, ey, ez);
-  const GLint vp_loc = glGetUniformLocation(gl.program(), "view_proj");
+}
+
+void Renderer::Impl::DrawFaces(const core::Pose2& pose, GLuint program) const {
+  const float ex = float(pose.x), ey = float(pose.y), ez = float(options.camera_height);
+  glUniform3f(glGetUniformLocation(program, "cam"), ex, ey, ez);
+  const GLint vp_loc = glGetUniformLocation(program, "view_proj");
   const float n = 0.2f, f = 5000.f;  // agents keep their radius (>= 0.25) from walls: nothing is nearer
-  const float proj[16] = {1, 0, 0, 0, 0, 1 / m.tan_half_v, 0, 0, 0, 0, -(f + n) / (f - n), -2 * f * n / (f - n), 0, 0, -1, 0};
-  glBindVertexArray(vao);
+  const float proj[16] = {1, 0, 0, 0, 0, 1 / tan_half_v, 0, 0, 0, 0, -(f + n) / (f - n), -2 * f * n / (f - n), 0, 0, -1, 0};
   std::vector<GLint> firsts;
   std::vector<GLsizei> counts;
   for (int face = 0; face < 4; ++face) {
@@ -401,11 +405,11 @@ Panorama Renderer::Render(const core::Pose2& pose, int outputs) const {
     float vp[16];
     MatMul(proj, view, vp);
     glUniformMatrix4fv(vp_loc, 1, GL_TRUE, vp);
-    glViewport(face * m.face_w, 0, m.face_w, fh);
+    glViewport(face * face_w, 0, face_w, face_h);
     // Draw only objects whose ground-plane bounding circle reaches this face's 90-degree wedge.
     firsts.clear();
     counts.clear();
-    for (const auto& o : m.scene.objects) {
+    for (const auto& o : scene.objects) {
       bool draw = o.radius < 0;
       if (!draw) {
         const double dx = o.cx - pose.x, dy = o.cy - pose.y, d = std::hypot(dx, dy);
@@ -422,38 +426,55 @@ Panorama Renderer::Render(const core::Pose2& pose, int outputs) const {
     }
     glMultiDrawArrays(GL_TRIANGLES, firsts.data(), counts.data(), GLsizei(firsts.size()));
   }
+}
+
+void Renderer::Impl::ReadRgb(Panorama* pano) const {
+  const int atlas_w = 4 * face_w;
+  const size_t pixels = size_t(pano->width) * pano->height;
+  std::vector<uint8_t> atlas(size_t(atlas_w) * face_h * 4);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, atlas_w, face_h, GL_RGBA, GL_UNSIGNED_BYTE, atlas.data());
+  pano->rgb.resize(pixels * 3);
+  const uint8_t* src = atlas.data();
+  for (size_t k = 0; k < pixels; ++k) {
+    const uint32_t* t = &taps[4 * k];
+    const uint16_t* w = &weights[4 * k];
+    for (size_t c = 0; c < 3; ++c) {
+      const unsigned v = w[0] * src[t[0] + c] + w[1] * src[t[1] + c] + w[2] * src[t[2] + c] + w[3] * src[t[3] + c];
+      pano->rgb[3 * k + c] = uint8_t((v + 128) >> 8);
+    }
+  }
+}
+
+template <typename T>
+void Renderer::Impl::ReadNearest(std::vector<T>* out, GLenum attachment, GLenum format, GLenum type) const {
+  const int atlas_w = 4 * face_w;
+  std::vector<T> atlas(size_t(atlas_w) * face_h);
+  glReadBuffer(attachment);
+  glReadPixels(0, 0, atlas_w, face_h, format, type, atlas.data());
+  out->resize(size_t(options.width) * options.height);
+  for (size_t k = 0; k < out->size(); ++k) (*out)[k] = atlas[nearest[k]];
+}
+
+Panorama Renderer::Render(const core::Pose2& pose, int outputs) const {
+  const Impl& m = *impl_;
+  ThreadGl& gl = ThreadGl::Get();
+  gl.BindFramebuffer(4 * m.face_w, m.face_h);
+  const GLuint vao = gl.SceneVao(m.serial, m.scene);
+  glUseProgram(gl.program());
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  m.ClearTargets(outputs);
+  glBindVertexArray(vao);
+  m.DrawFaces(pose, gl.program());
   glFinish();
   Panorama pano;
   pano.width = m.options.width;
   pano.height = m.options.height;
-  const size_t pixels = size_t(pano.width) * pano.height;
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  if (outputs & kRenderRgb) {
-    std::vector<uint8_t> atlas(size_t(atlas_w) * fh * 4);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glReadPixels(0, 0, atlas_w, fh, GL_RGBA, GL_UNSIGNED_BYTE, atlas.data());
-    pano.rgb.resize(pixels * 3);
-    const uint8_t* src = atlas.data();
-    for (size_t k = 0; k < pixels; ++k) {
-      const uint32_t* t = &m.taps[4 * k];
-      const uint16_t* w = &m.weights[4 * k];
-      for (size_t c = 0; c < 3; ++c) {
-        const unsigned v = w[0] * src[t[0] + c] + w[1] * src[t[1] + c] + w[2] * src[t[2] + c] + w[3] * src[t[3] + c];
-        pano.rgb[3 * k + c] = uint8_t((v + 128) >> 8);
-      }
-    }
-  }
-  // Depth and ids: nearest source pixel (interpolating them would invent values between surfaces).
-  auto read_nearest = [&](auto* out, GLenum attachment, GLenum format, GLenum type) {
-    using T = std::remove_reference_t<decltype((*out)[0])>;
-    std::vector<T> atlas(size_t(atlas_w) * fh);
-    glReadBuffer(attachment);
-    glReadPixels(0, 0, atlas_w, fh, format, type, atlas.data());
-    out->resize(pixels);
-    for (size_t k = 0; k < pixels; ++k) (*out)[k] = atlas[m.nearest[k]];
-  };
-  if (outputs & kRenderDepth) read_nearest(&pano.depth, GL_COLOR_ATTACHMENT1, GL_RED, GL_FLOAT);
-  if (outputs & kRenderIds) read_nearest(&pano.ids, GL_COLOR_ATTACHMENT2, GL_RED_INTEGER, GL_INT);
+  if (outputs & kRenderRgb) m.ReadRgb(&pano);
+  if (outputs & kRenderDepth) m.ReadNearest(&pano.depth, GL_COLOR_ATTACHMENT1, GL_RED, GL_FLOAT);
+  if (outputs & kRenderIds) m.ReadNearest(&pano.ids, GL_COLOR_ATTACHMENT2, GL_RED_INTEGER, GL_INT);
   const GLenum err = glGetError();
   if (err != GL_NO_ERROR) GlFail("error " + std::to_string(err) + " while rendering");
   return pano;

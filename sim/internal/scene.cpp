@@ -160,20 +160,10 @@ Color Jitter(core::Rng& rng, Color c, float amount) {
   return {j(c.r), j(c.g), j(c.b)};
 }
 
-}  // namespace
-
-Scene BuildScene(const core::World& world, const RenderOptions& o) {
-  Scene scene;
-  SceneBuilder sb(&scene);
-  core::Rng rng(core::DeriveSeed(world.seed, 0x52454e44));  // the scene's own stream: same seed, same look
+// Floor (and for open worlds a ground plane out to the horizon) and ceiling.
+void AddFlats(const core::World& world, const RenderOptions& o, core::Rng& rng, SceneBuilder& fb) {
   const bool indoor = world.has_boundary();
   const core::Aabb2& b = world.bounds;
-  const auto rings = core::MapRings(world);
-
-  // Floor (and for open worlds a ground plane out to the horizon) and ceiling.  They go into the vertex list
-  // last: drawn after the walls, most of their pixels fail the depth test before shading.
-  Scene flats;
-  SceneBuilder fb(&flats);
   const double grow = indoor ? 5.0 : 3000.0;
   const core::Aabb2 floor{{b.min.x - grow, b.min.y - grow}, {b.max.x + grow, b.max.y + grow}};
   if (world.kind == core::WorldKind::kOfficePark || !indoor) {
@@ -184,12 +174,16 @@ Scene BuildScene(const core::World& world, const RenderOptions& o) {
     fb.Flat(floor, 0.0, true, Jitter(rng, {0.55f, 0.5f, 0.45f}, 0.1f), kTiles, kNoObstacle);
   }
   if (indoor) fb.Flat(floor, o.wall_height, false, Jitter(rng, {0.85f, 0.85f, 0.82f}, 0.05f), kCeiling, kNoObstacle);
+}
 
-  // Map walls.
+// The map's walls: buildings' facades in the office park, painted walls indoors; one object a wall.
+void AddMapWalls(const core::World& world, const RenderOptions& o, core::Rng& rng, SceneBuilder& sb) {
   static const Color kIndoorPalette[] = {{0.80f, 0.78f, 0.72f}, {0.62f, 0.70f, 0.78f}, {0.78f, 0.64f, 0.56f},
                                          {0.70f, 0.76f, 0.62f}, {0.86f, 0.84f, 0.80f}, {0.60f, 0.58f, 0.66f}};
   static const Color kFacadePalette[] = {{0.72f, 0.70f, 0.66f}, {0.55f, 0.42f, 0.36f}, {0.62f, 0.66f, 0.72f},
                                          {0.82f, 0.78f, 0.66f}, {0.45f, 0.47f, 0.50f}};
+  const bool indoor = world.has_boundary();
+  const auto rings = core::MapRings(world);
   for (size_t r = 0; r < rings.size(); ++r) {
     const core::Ring& ring = *rings[r];
     const bool boundary = indoor && r == 0;
@@ -214,8 +208,10 @@ Scene BuildScene(const core::World& world, const RenderOptions& o) {
       sb.EndObject();
     }
   }
+}
 
-  // Clutter: boxes, cylinders, trees.
+// Clutter: boxes, cylinders, trees; one object each.
+void AddClutter(const core::World& world, core::Rng& rng, SceneBuilder& sb) {
   for (size_t i = 0; i < world.clutter.size(); ++i) {
     const core::Clutter& c = world.clutter[i];
     const int32_t id = ClutterId(int(i));
@@ -234,24 +230,41 @@ Scene BuildScene(const core::World& world, const RenderOptions& o) {
     }
     sb.EndObject();
   }
+}
 
-  // The guiding path: green strips on the floor along the route.
-  if (world.guide_path.size() >= 2) {
-    const Color green{0.16f, 0.78f, 0.22f};
-    const double half = world.guide_path_width / 2, z = 0.05;
-    for (size_t i = 0; i + 1 < world.guide_path.size(); ++i) {
-      const Vec2 a = world.guide_path[i], c = world.guide_path[i + 1];
-      const core::Aabb2 box{{std::min(a.x, c.x) - half, std::min(a.y, c.y) - half},
-                            {std::max(a.x, c.x) + half, std::max(a.y, c.y) + half}};
-      if (a.x == c.x || a.y == c.y) {
-        sb.Flat(box, z, true, green, kPlain, kNoObstacle);
-      } else {  // diagonal segments (hand-written worlds): a rotated strip
-        const Vec2 d = (c - a) / core::Distance(a, c), n{-d.y * half, d.x * half};
-        sb.FanUp({a - n, c - n, c + n, a + n}, z, green, kPlain, kNoObstacle);
-      }
-      sb.EndObject();
+// The guiding path: green strips on the floor along the route.
+void AddGuidePath(const core::World& world, SceneBuilder& sb) {
+  if (world.guide_path.size() < 2) return;
+  const Color green{0.16f, 0.78f, 0.22f};
+  const double half = world.guide_path_width / 2, z = 0.05;
+  for (size_t i = 0; i + 1 < world.guide_path.size(); ++i) {
+    const Vec2 a = world.guide_path[i], c = world.guide_path[i + 1];
+    const core::Aabb2 box{{std::min(a.x, c.x) - half, std::min(a.y, c.y) - half},
+                          {std::max(a.x, c.x) + half, std::max(a.y, c.y) + half}};
+    if (a.x == c.x || a.y == c.y) {
+      sb.Flat(box, z, true, green, kPlain, kNoObstacle);
+    } else {  // diagonal segments (hand-written worlds): a rotated strip
+      const Vec2 d = (c - a) / core::Distance(a, c), n{-d.y * half, d.x * half};
+      sb.FanUp({a - n, c - n, c + n, a + n}, z, green, kPlain, kNoObstacle);
     }
+    sb.EndObject();
   }
+}
+
+}  // namespace
+
+Scene BuildScene(const core::World& world, const RenderOptions& o) {
+  Scene scene;
+  SceneBuilder sb(&scene);
+  core::Rng rng(core::DeriveSeed(world.seed, 0x52454e44));  // the scene's own stream: same seed, same look
+  // Floor and ceiling go into the vertex list last: drawn after the walls, most of their pixels fail the depth
+  // test before shading.  The random draws keep this order: flats, walls, clutter.
+  Scene flats;
+  SceneBuilder fb(&flats);
+  AddFlats(world, o, rng, fb);
+  AddMapWalls(world, o, rng, sb);
+  AddClutter(world, rng, sb);
+  AddGuidePath(world, sb);
   scene.vertices.insert(scene.vertices.end(), flats.vertices.begin(), flats.vertices.end());
   sb.EndObject(/*always=*/true);
   return scene;
