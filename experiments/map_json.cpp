@@ -26,9 +26,11 @@ nlohmann::json Vertices(const std::vector<mapping::MapVertex>& vertices) {
 }  // namespace
 
 nlohmann::json MapGeometryJson(const mapping::MapView& view) {
-  nlohmann::json walls = nlohmann::json::array(), known = nlohmann::json::array(), frontiers = nlohmann::json::array();
+  nlohmann::json walls = nlohmann::json::array(), known = nlohmann::json::array();
+  nlohmann::json frontiers = nlohmann::json::array();
   for (const auto& w : view.walls)
-    walls.push_back({{"a", w.a}, {"b", w.b}, {"probability", w.probability}, {"from", Point(w.pa)}, {"to", Point(w.pb)}});
+    walls.push_back(
+        {{"a", w.a}, {"b", w.b}, {"probability", w.probability}, {"from", Point(w.pa)}, {"to", Point(w.pb)}});
   for (const auto& poly : view.known_space) {
     nlohmann::json holes = nlohmann::json::array();
     for (const auto& h : poly.holes) holes.push_back(Points(h));
