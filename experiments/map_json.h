@@ -1,7 +1,7 @@
 #pragma once
 // The map's geometry as JSON, the "map" object of `toponav map`'s map.json: what another tool reads to use a
-// map built from simulated or recorded panoramas (README: "map.json").  World units and radians; points are
-// [x, y] pairs.
+// map built from simulated or recorded panoramas (README: "map.json").  World units; points are [x, y]
+// pairs.
 #include <nlohmann/json.hpp>
 
 #include "mapping/mapping.h"

@@ -399,7 +399,9 @@ std::vector<double> MazeLines(const GuidedMazeOptions& o, int cells) {
 // opens.
 std::vector<char> MazeTiles(const MazeTree& adj, int nx, int fx, int fy) {
   auto id = [&](int x, int y) { return y * nx + x; };
-  auto connected = [&](int a, int b) { return std::find(adj[size_t(a)].begin(), adj[size_t(a)].end(), b) != adj[size_t(a)].end(); };
+  auto connected = [&](int a, int b) {
+    return std::find(adj[size_t(a)].begin(), adj[size_t(a)].end(), b) != adj[size_t(a)].end();
+  };
   std::vector<char> fine(size_t(fx) * fy, 0);
   for (int ty = 1; ty < fy - 1; ++ty)
     for (int tx = 1; tx < fx - 1; ++tx) {

@@ -391,7 +391,10 @@ void Renderer::Impl::DrawFaces(const core::Pose2& pose, GLuint program) const {
   glUniform3f(glGetUniformLocation(program, "cam"), ex, ey, ez);
   const GLint vp_loc = glGetUniformLocation(program, "view_proj");
   const float n = 0.2f, f = 5000.f;  // agents keep their radius (>= 0.25) from walls: nothing is nearer
-  const float proj[16] = {1, 0, 0, 0, 0, 1 / tan_half_v, 0, 0, 0, 0, -(f + n) / (f - n), -2 * f * n / (f - n), 0, 0, -1, 0};
+  const float proj[16] = {1, 0, 0, 0,
+                          0, 1 / tan_half_v, 0, 0,
+                          0, 0, -(f + n) / (f - n), -2 * f * n / (f - n),
+                          0, 0, -1, 0};
   std::vector<GLint> firsts;
   std::vector<GLsizei> counts;
   for (int face = 0; face < 4; ++face) {
