@@ -1,6 +1,6 @@
 #pragma once
 // Walls the map has held, and for how many updates.  The posterior may later leave out a wall the sensor saw
-// well (a room's side in tuning labyrinth 7093, held for 10-25 steps).  Known space then still ends along the
+// well (an end vertex flipped out by MCMC, or its labels outvoted by far views).  Known space then still ends along the
 // wall's line -- the observations' own polygons stop there -- and that edge becomes a frontier with nothing
 // behind it, which an agent would walk back across the world to look at.  A frontier lying along a wall the
 // map held for a while, whose ends turn a corner into the map's walls there, is taken for that wall
