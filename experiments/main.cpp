@@ -1,5 +1,6 @@
-// toponav: the command-line front end.  Subcommands: world, observe, render, map, trial, bench, report, demo,
-// info here; datagen, train and eval-sensor in experiments/cli/learning_commands.cpp.
+// toponav: the command-line front end.  Subcommands: world, bench, report, demo, info here; observe, render, map
+// in experiments/cli/sensing_commands.cpp; trial in experiments/cli/trial_command.cpp; datagen, train and
+// eval-sensor in experiments/cli/learning_commands.cpp.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 #include <fmt/ranges.h>
@@ -19,6 +20,7 @@
 #include "experiments/cli/common.h"
 #include "experiments/cli/learning_commands.h"
 #include "experiments/cli/sensing_commands.h"
+#include "experiments/cli/trial_command.h"
 #include "experiments/cli_parse.h"
 #include "experiments/navigation_report.h"
 #include "experiments/experiments.h"
@@ -88,145 +90,6 @@ int RunWorld(const WorldArgs& a) {
     fmt::print("{} worlds, mean generation time {:.1f} ms{}\n", seeds.size(), total_ms / double(seeds.size()),
                a.check ? fmt::format(", {} with problems", failures) : "");
   return failures == 0 ? 0 : 3;
-}
-
-// ---------------------------------------------------------------- trial
-
-struct TrialArgs : WorldSource {
-  std::string out = "results/trial";
-  std::string video;
-  std::string trace;
-  std::string planner;  // a goal-directed planner: a navigation trial from the world's start to its goal
-  int frames_every = 0;
-  experiments::TrialOptions trial;
-  std::optional<int> max_steps, mcmc_every, open_world_mcmc_every;  // unset: the config's
-};
-
-// The --trace CSV at 'path' with the header's first columns written (not open when 'path' is empty).
-std::ofstream OpenTrace(const std::string& path, const std::string& header) {
-  std::ofstream f;
-  if (path.empty()) return f;
-  f.open(path);
-  if (!f) throw core::DataError(path, "cannot write the trace file");
-  f << header;
-  return f;
-}
-
-// One row of the navigation trace (columns as its header in RunNavigationCommand).
-std::string NavigationTraceRow(int step, const core::Vec2& at, const core::Vec2& goal, const mapping::MapView& v,
-                               const std::map<int, double>& ps) {
-  double min_ps = ps.empty() ? std::nan("") : 1.0;
-  for (const auto& [id, p] : ps) min_ps = std::min(min_ps, p);
-  return fmt::format("{},{:.2f},{:.2f},{:.2f},{},{},{:.3f},{},{},{:.1f}\n", step, at.x, at.y, core::Distance(at, goal),
-                     v.frontiers.size(), ps.size(), min_ps, v.vertices.size(), v.walls.size(), v.known_area());
-}
-
-// A goal-directed navigation trial with the named planner (trial.png, a frame every --frames-every steps, and
-// with --trace a CSV row a step).
-int RunNavigationCommand(const TrialArgs& a) {
-  const experiments::Config cfg = LoadOrDefault(a.config);
-  const auto planner = experiments::ParseGoalPlanner(a.planner);
-  if (!planner) throw core::ConfigError("<command line>", "--planner", a.planner, "not a goal-directed planner (optimistic, oracle, lsp)");
-  const uint64_t seed = experiments::ParseSeed(a.seed);
-  const core::World w = StartAtPose(WorldFromSource(a, cfg), a.pose);
-  EnsureDir(a.out);
-  experiments::NavigationTrialOptions n;
-  n.planner = *planner;
-  n.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
-  n.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
-  int step = 0;
-  experiments::MapPictureExtras extras{w.goal, {}, {}};
-  n.on_estimates = [&](const std::map<int, double>& ps) { extras.frontier_ps = ps; };
-  std::ofstream trace =
-      OpenTrace(a.trace, "step,x,y,distance_to_goal,frontiers,estimated_frontiers,min_ps,map_vertices,map_walls,known_area");
-  if (trace.is_open()) trace << "\n";
-  if (a.frames_every > 0 || trace.is_open())
-    n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
-      if (a.frames_every > 0 && step % a.frames_every == 0)
-        experiments::DrawMapPicture(w, v, paths, cfg.picture,
-                                    (fs::path(a.out) / fmt::format("frame_{:04d}.png", step)).string(), extras);
-      if (trace.is_open())  // labelled like the search trace: moves made (the final map repeats the last)
-        trace << NavigationTraceRow(int(paths.front().size()) - 1, paths.front().back(), w.goal, v, extras.frontier_ps);
-      ++step;
-    };
-  mapping::MapView view;
-  const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
-  if (trace.is_open()) fmt::print("wrote {} ({} rows)\n", a.trace, step);
-  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, (fs::path(a.out) / "trial.png").string(), {w.goal, r.frontier_ps, {}});
-  fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, {:.1f} s -> {}\n", seed,
-             r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
-  return 0;
-}
-
-// Open worlds: where the building-placement IoU is lost (each building's IoU, spurious enclosed ground).
-void PrintBuildingPlacement(const core::World& w, const mapping::MapView& view) {
-  const auto b = experiments::BreakDownBuildingPlacement(w, view);
-  std::string per;
-  for (double x : b.building_iou) per += fmt::format(" {:.3f}", x);
-  fmt::print("buildings' IoU with the holes that overlap them:{}; holes overlapping no building: {:.1f} units^2\n", per,
-             b.spurious_area);
-}
-
-int RunTrialCommand(const TrialArgs& a) {
-  if (!a.planner.empty()) return RunNavigationCommand(a);
-  const experiments::Config cfg = LoadOrDefault(a.config);
-  const uint64_t seed = experiments::ParseSeed(a.seed);
-  const core::World w = StartAtPose(WorldFromSource(a, cfg), a.pose);
-  EnsureDir(a.out);
-  mapping::MapView view;
-  experiments::TrialOptions t = a.trial;
-  t.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
-  t.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
-  t.open_world_mcmc_every = a.open_world_mcmc_every.value_or(cfg.open_world.mcmc_every);
-  std::unique_ptr<experiments::TrialVideo> video;
-  if (!a.video.empty()) video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
-  // Trace: one CSV row a step (the map the planners used; the last row is the final map the metrics score).
-  std::ofstream trace = OpenTrace(a.trace, "step,iou,frontiers,targets,map_vertices,map_walls");
-  if (trace.is_open()) {
-    for (int i = 0; i < t.num_agents; ++i) trace << fmt::format(",x{0},y{0},frontier{0},goal_x{0},goal_y{0}", i);
-    trace << "\n";
-  }
-  // What the planners chose this step (targets on offer; each agent's frontier and the end of its path),
-  // written with the step's row; the final row has none.
-  std::string plan_targets;
-  std::vector<std::string> plan_goals;
-  if (trace.is_open())
-    t.on_plan = [&](const experiments::LoopState&, const std::vector<planning::FrontierTarget>& targets,
-                    const std::vector<planning::FrontierChoice>& choices) {
-      plan_targets = std::to_string(targets.size());
-      plan_goals.clear();
-      for (const auto& c : choices)
-        plan_goals.push_back(c.status == planning::PlanStatus::kFound && !c.path.points.empty()
-                                 ? fmt::format("{},{:.2f},{:.2f}", c.frontier_id, c.path.points.back().x, c.path.points.back().y)
-                                 : std::string(",,"));
-    };
-  if (video || trace.is_open())
-    t.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
-      if (video) video->AddFrame(v, paths);
-      if (!trace.is_open()) return;
-      const double iou = w.has_boundary() ? experiments::KnownSpaceIoU(w, v) : experiments::BuildingPlacementIoU(w, v);
-      trace << fmt::format("{},{:.5f},{},{},{},{}", paths.front().size() - 1, iou, v.frontiers.size(), plan_targets,
-                           v.vertices.size(), v.walls.size());
-      for (size_t i = 0; i < paths.size(); ++i)
-        trace << fmt::format(",{:.2f},{:.2f},{}", paths[i].back().x, paths[i].back().y, i < plan_goals.size() ? plan_goals[i] : ",,");
-      trace << "\n";
-      plan_targets.clear();
-      plan_goals.clear();
-    };
-  const auto r = experiments::RunSearchTrial(w, cfg, t, seed, &view);
-  if (video) fmt::print("wrote {} ({} frames)\n", a.video, video->frames());
-  if (trace.is_open()) fmt::print("wrote {} ({} steps)\n", a.trace, r.steps);
-  experiments::MapPictureExtras extras;
-  extras.blocks = r.blocks;
-  experiments::DrawMapPicture(w, view, r.paths, cfg.picture, (fs::path(a.out) / "trial.png").string(), extras);
-  double total = 0;
-  for (double d : r.distance) total += d;
-  fmt::print("seed {} agents {}: {} after {} steps, IoU {:.4f}, success {}, distance {:.1f}, nudges {}, "
-             "frontiers given up {}, motion blocks {}, vertex inspections {}, {:.1f} s -> {}\n",
-             seed, r.num_agents, r.end_reason, r.steps, r.iou, r.success ? "yes" : "no", total, r.nudges,
-             r.give_ups, r.blocks.size(), r.inspections, r.wall_time_s, (fs::path(a.out) / "trial.png").string());
-  if (!w.has_boundary()) PrintBuildingPlacement(w, view);
-  return 0;
 }
 
 // ---------------------------------------------------------------- bench and report
@@ -341,29 +204,6 @@ CLI::App* AddWorldCommand(CLI::App& app, WorldArgs* a) {
   return world;
 }
 
-CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
-  CLI::App* trial = app.add_subcommand("trial", "Run one search trial (1 agent, or a team over distinct frontiers), or with "
-                                                 "--planner one goal-directed navigation trial");
-  AddWorldSourceOptions(trial, a, "YAML config (sensor:, mapping:, motion:)");
-  trial->add_option("--agents", a->trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
-  trial->add_option("--max-steps", a->max_steps, "Step cap (default: the config's bench.max_steps)")->check(CLI::Range(1, 100000));
-  trial->add_option("--mcmc-every", a->mcmc_every, "MCMC every this many steps, 0: never (default: the config's bench.mcmc_every)")
-      ->check(CLI::Range(0, 100000));
-  trial->add_option("--open-world-mcmc-every", a->open_world_mcmc_every,
-                    "MCMC every this many steps in open worlds, at the same proposals per step (default: the config's "
-                    "open_world.mcmc_every)")
-      ->check(CLI::Range(1, 100000));
-  trial->add_option("--out", a->out, "Output directory: trial.png")->capture_default_str();
-  trial->add_option("--video", a->video, "Also write a video of the trial, one frame a step (.mp4 or .avi)");
-  trial->add_option("--trace", a->trace,
-                    "Also write a CSV with one row a step: IoU, frontiers and targets, map size, agent positions and "
-                    "goals (navigation: position, distance to the goal, frontiers, estimates, map size)");
-  trial->add_option("--planner", a->planner, "Run goal-directed navigation (start to goal, one agent) with this planner instead: optimistic, oracle, lsp");
-  trial->add_option("--frames-every", a->frames_every, "Navigation: also draw the map every this many steps (frame_NNNN.png)")
-      ->check(CLI::Range(1, 100000));
-  return trial;
-}
-
 CLI::App* AddBenchCommand(CLI::App& app, BenchArgs* a) {
   CLI::App* bench = app.add_subcommand("bench", "Run a search benchmark (paper Table I): trials in parallel processes, "
                                              "JSON lines, resumable, shardable; prints the table");
@@ -387,11 +227,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   WorldArgs wa;
-  TrialArgs ta;
   BenchArgs ba;
   CLI::App* world = AddWorldCommand(app, &wa);
   cli::SensingCommands sensing_commands(app);
-  CLI::App* trial = AddTrialCommand(app, &ta);
+  cli::TrialCommand trial_command(app);
   CLI::App* bench = AddBenchCommand(app, &ba);
   cli::LearningCommands learning_commands(app);
   std::vector<std::string> report_dirs;
@@ -418,7 +257,7 @@ int main(int argc, char** argv) {
   try {
     if (*world) return RunWorld(wa);
     if (const auto rc = sensing_commands.Run()) return *rc;
-    if (*trial) return RunTrialCommand(ta);
+    if (const auto rc = trial_command.Run()) return *rc;
     if (*bench) return RunBench(ba);
     if (const auto rc = learning_commands.Run()) return *rc;
     if (*report) return RunReport(report_dirs, report_out);

@@ -92,65 +92,80 @@ bool ValidLabyrinthGrid(const LabyrinthOptions& o, const std::vector<char>& g) {
   return internal::CountComponents(n, n, g) == 1;
 }
 
+// The rooms, drawn all at once; empty when any two come within room_separation_cells (the set is redrawn).
+std::vector<GridRoom> DrawRooms(const LabyrinthOptions& o, Rng& rng) {
+  const int n = o.grid_cells;
+  std::vector<GridRoom> rooms;
+  for (int i = 0; i < o.num_rooms; ++i) {
+    GridRoom r{0, 0, rng.UniformInt(o.room_min_cells - 1, o.room_max_cells - 1),
+               rng.UniformInt(o.room_min_cells - 1, o.room_max_cells - 1)};
+    r.x0 = rng.UniformInt(0, n - 1 - r.w);
+    r.y0 = rng.UniformInt(0, n - 1 - r.h);
+    rooms.push_back(r);
+  }
+  for (size_t i = 0; i < rooms.size(); ++i)
+    for (size_t j = i + 1; j < rooms.size(); ++j)
+      if (RoomGap(rooms[i], rooms[j]) <= o.room_separation_cells) return {};
+  return rooms;
+}
+
+// Which rooms a corridor joins: one of four connection patterns (vertexnav.md §5.2), generalised to any room
+// count k >= 2.
+std::vector<std::pair<int, int>> DrawLinks(int k, Rng& rng) {
+  std::vector<std::pair<int, int>> links;
+  const int pattern = k >= 4 ? rng.UniformInt(0, 3) : 2;
+  if (pattern == 0) {
+    links = {{0, 1}, {1, 2}, {2, 0}};
+    for (int i = 3; i < k; ++i) links.push_back({i, rng.UniformInt(0, i - 1)});
+  } else if (pattern == 1) {
+    for (int i = 0; i < k; ++i) links.push_back({i, (i + 1) % k});
+  } else if (pattern == 2) {
+    for (int i = 0; i + 1 < k; ++i) links.push_back({i, i + 1});
+  } else {
+    for (int i = 0; i + 1 < k; ++i) {
+      links.push_back({i, i + 1});
+      if (i % 2 == 0) links.push_back({i, i + 1});
+    }
+  }
+  return links;
+}
+
+// Carves an L-shaped corridor between interior cells (not on a room's edge) of each linked pair of rooms into
+// the n x n grid 'g'; false when two such cells lie farther apart than max_corridor_offset_cells in x or y.
+bool CarveCorridors(const LabyrinthOptions& o, const std::vector<GridRoom>& rooms,
+                    const std::vector<std::pair<int, int>>& links, Rng& rng, std::vector<char>* g) {
+  const int n = o.grid_cells;
+  for (const auto& [i, j] : links) {
+    const GridRoom& a = rooms[size_t(i)];
+    const GridRoom& b = rooms[size_t(j)];
+    const int ax = rng.UniformInt(a.x0 + 1, a.x0 + a.w - 1), ay = rng.UniformInt(a.y0 + 1, a.y0 + a.h - 1);
+    const int bx = rng.UniformInt(b.x0 + 1, b.x0 + b.w - 1), by = rng.UniformInt(b.y0 + 1, b.y0 + b.h - 1);
+    if (std::abs(ax - bx) > o.max_corridor_offset_cells || std::abs(ay - by) > o.max_corridor_offset_cells)
+      return false;
+    const bool x_first = rng.Bernoulli(0.5);
+    int x = ax, y = ay;
+    auto carve = [&]() { (*g)[size_t(y) * n + x] = 1; };
+    for (int leg = 0; leg < 2; ++leg) {
+      if ((leg == 0) == x_first)
+        while (x != bx) { x += bx > x ? 1 : -1; carve(); }
+      else
+        while (y != by) { y += by > y ? 1 : -1; carve(); }
+    }
+  }
+  return true;
+}
+
 std::vector<char> LabyrinthGrid(const LabyrinthOptions& o, Rng& rng) {
   const int n = o.grid_cells;
   for (int attempt = 0; attempt < 100000; ++attempt) {
-    // All rooms at once, the set redrawn if any two come within room_separation_cells.
-    std::vector<GridRoom> rooms;
-    for (int i = 0; i < o.num_rooms; ++i) {
-      GridRoom r{0, 0, rng.UniformInt(o.room_min_cells - 1, o.room_max_cells - 1),
-             rng.UniformInt(o.room_min_cells - 1, o.room_max_cells - 1)};
-      r.x0 = rng.UniformInt(0, n - 1 - r.w);
-      r.y0 = rng.UniformInt(0, n - 1 - r.h);
-      rooms.push_back(r);
-    }
-    bool apart = true;
-    for (size_t i = 0; i < rooms.size(); ++i)
-      for (size_t j = i + 1; j < rooms.size(); ++j) apart = apart && RoomGap(rooms[i], rooms[j]) > o.room_separation_cells;
-    if (!apart) continue;
-    // One of four connection patterns (vertexnav.md §5.2), generalised to any room count >= 2.
-    std::vector<std::pair<int, int>> links;
-    const int k = o.num_rooms;
-    const int pattern = k >= 4 ? rng.UniformInt(0, 3) : 2;
-    if (pattern == 0) {
-      links = {{0, 1}, {1, 2}, {2, 0}};
-      for (int i = 3; i < k; ++i) links.push_back({i, rng.UniformInt(0, i - 1)});
-    } else if (pattern == 1) {
-      for (int i = 0; i < k; ++i) links.push_back({i, (i + 1) % k});
-    } else if (pattern == 2) {
-      for (int i = 0; i + 1 < k; ++i) links.push_back({i, i + 1});
-    } else {
-      for (int i = 0; i + 1 < k; ++i) {
-        links.push_back({i, i + 1});
-        if (i % 2 == 0) links.push_back({i, i + 1});
-      }
-    }
+    const std::vector<GridRoom> rooms = DrawRooms(o, rng);
+    if (rooms.empty()) continue;
+    const std::vector<std::pair<int, int>> links = DrawLinks(o.num_rooms, rng);
     std::vector<char> g(size_t(n) * n, 0);
     for (const auto& r : rooms)
       for (int y = r.y0; y <= r.y0 + r.h; ++y)
         for (int x = r.x0; x <= r.x0 + r.w; ++x) g[size_t(y) * n + x] = 1;
-    bool ok = true;
-    for (const auto& [i, j] : links) {
-      const GridRoom& a = rooms[size_t(i)];
-      const GridRoom& b = rooms[size_t(j)];
-      // From an interior cell of each room (not on its edge).
-      const int ax = rng.UniformInt(a.x0 + 1, a.x0 + a.w - 1), ay = rng.UniformInt(a.y0 + 1, a.y0 + a.h - 1);
-      const int bx = rng.UniformInt(b.x0 + 1, b.x0 + b.w - 1), by = rng.UniformInt(b.y0 + 1, b.y0 + b.h - 1);
-      if (std::abs(ax - bx) > o.max_corridor_offset_cells || std::abs(ay - by) > o.max_corridor_offset_cells) {
-        ok = false;
-        break;
-      }
-      const bool x_first = rng.Bernoulli(0.5);
-      int x = ax, y = ay;
-      auto carve = [&]() { g[size_t(y) * n + x] = 1; };
-      for (int leg = 0; leg < 2; ++leg) {
-        if ((leg == 0) == x_first)
-          while (x != bx) { x += bx > x ? 1 : -1; carve(); }
-        else
-          while (y != by) { y += by > y ? 1 : -1; carve(); }
-      }
-    }
-    if (ok && ValidLabyrinthGrid(o, g)) return g;
+    if (CarveCorridors(o, rooms, links, rng, &g) && ValidLabyrinthGrid(o, g)) return g;
   }
   throw core::InternalError("labyrinth: no valid layout after 100000 attempts (check the options)");
 }
