@@ -22,7 +22,8 @@ struct Vec2 {
 
 inline double Dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
 inline double Cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-inline double Norm(const Vec2& a) { return std::sqrt(a.x * a.x + a.y * a.y); }  // not hypot: hot, and coordinates are small
+// Not hypot: hot, and coordinates are small.
+inline double Norm(const Vec2& a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 inline double Distance(const Vec2& a, const Vec2& b) { return Norm(a - b); }
 inline Vec2 Rotate(const Vec2& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);

@@ -26,7 +26,8 @@ mapping::MapperOptions MapperOptionsFor(const core::World& world, const Config& 
 // Moves every agent one step along its path, letting the policy correct each step; records paths.
 void MoveAgents(const LoopState& state, const std::vector<std::vector<core::Vec2>>& paths, AgentPolicy& policy,
                 sim::MotionSim& motion, core::Rng& rng, LoopResult* r) {
-  TOPONAV_CHECK(paths.size() == r->paths.size(), "the policy planned " << paths.size() << " paths for " << r->paths.size() << " agents");
+  TOPONAV_CHECK(paths.size() == r->paths.size(),
+                "the policy planned " << paths.size() << " paths for " << r->paths.size() << " agents");
   for (size_t a = 0; a < paths.size(); ++a) {
     sim::StepResult s = motion.Step(int(a), paths[a]);
     s = policy.AfterStep(state, int(a), s, motion, rng);

@@ -142,7 +142,9 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
       const fs::path dir = fs::path(o.out_dir) / "videos";
       fs::create_directories(dir);
       video = std::make_unique<TrialVideo>(w, config.picture, (dir / (name + ".mp4")).string());
-      on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video->AddFrame(v, paths); };
+      on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
+        video->AddFrame(v, paths);
+      };
     }
     mapping::MapView view;
     std::vector<std::vector<core::Vec2>> paths;
@@ -195,7 +197,8 @@ std::string BatchStamp(const std::string& config_path, const std::vector<TrialId
   std::string keys;
   for (const auto& t : trials) keys += t.Key() + "\n";
   std::istringstream trial_set(keys);
-  os << std::hex << "program-" << (program ? fnv(program) : 0) << "-config-" << fnv(config) << "-trials-" << fnv(trial_set);
+  os << std::hex << "program-" << (program ? fnv(program) : 0) << "-config-" << fnv(config) << "-trials-"
+     << fnv(trial_set);
   return os.str();
 }
 
@@ -220,8 +223,9 @@ void PrepareOutput(const BatchOptions& o, const std::string& own_file) {
   for (const auto& f : BatchResultsFiles(o.out_dir))
     if (fs::file_size(f) > 0) held.push_back(f.filename().string());
   if (!held.empty()) {
-    const std::string what = old.empty() ? "trials of an unknown build, config or trial set (no stamp)"
-                                         : "trials of another build, config or trial set (stamp " + old + ", now " + o.stamp + ")";
+    const std::string what =
+        old.empty() ? "trials of an unknown build, config or trial set (no stamp)"
+                    : "trials of another build, config or trial set (stamp " + old + ", now " + o.stamp + ")";
     const bool only_own = held.size() == 1 && held[0] == fs::path(own_file).filename().string();
     std::string files;
     for (const auto& h : held) files += (files.empty() ? "" : ", ") + h;
@@ -338,7 +342,8 @@ void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<T
       Child& c = running[i];
       char buf[4096];
       ssize_t n;
-      while ((pfds[i].revents & (POLLIN | POLLHUP)) && (n = ::read(c.fd, buf, sizeof buf)) > 0) c.buffer.append(buf, size_t(n));
+      while ((pfds[i].revents & (POLLIN | POLLHUP)) && (n = ::read(c.fd, buf, sizeof buf)) > 0)
+        c.buffer.append(buf, size_t(n));
       int status = 0;
       const pid_t w = ::waitpid(c.pid, &status, WNOHANG);
       if (w == 0) continue;        // still running
@@ -350,7 +355,8 @@ void RunWorkers(const Config& config, const BatchOptions& o, const std::vector<T
       ++summary->ran;
       progress.Report(*summary);
     }
-    running.erase(std::remove_if(running.begin(), running.end(), [](const Child& c) { return c.pid < 0; }), running.end());
+    running.erase(std::remove_if(running.begin(), running.end(), [](const Child& c) { return c.pid < 0; }),
+                  running.end());
   }
 }
 

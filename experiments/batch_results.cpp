@@ -81,9 +81,9 @@ void CheckOneBatch(const std::vector<std::string>& dirs) {
   for (size_t i = 1; i < dirs.size(); ++i) {
     const std::string a = ReadStamp(dirs[0]), b = ReadStamp(dirs[i]);
     if (a != b)
-      throw core::DataError(dirs[i], "its trials come from another build, config or trial set than " + dirs[0] + "'s (stamp " +
-                                         (b.empty() ? "none" : b) + " against " + (a.empty() ? "none" : a) +
-                                         "): report them separately");
+      throw core::DataError(dirs[i], "its trials come from another build, config or trial set than " + dirs[0] +
+                                         "'s (stamp " + (b.empty() ? "none" : b) + " against " +
+                                         (a.empty() ? "none" : a) + "): report them separately");
   }
 }
 
@@ -136,8 +136,8 @@ std::string CsvTable(const std::vector<ReportRow>& rows) {
   std::ostringstream os;
   os << "environment,agents,trials,successes,mean_steps,mean_iou,failed,mean_wall_s,ms_per_step\n";
   for (const auto& r : rows)
-    os << core::ToString(r.kind) << "," << r.agents << "," << r.trials << "," << r.successes << "," << r.mean_steps << ","
-       << r.mean_iou << "," << r.failed << "," << r.mean_wall_s << "," << r.ms_per_step << "\n";
+    os << core::ToString(r.kind) << "," << r.agents << "," << r.trials << "," << r.successes << "," << r.mean_steps
+       << "," << r.mean_iou << "," << r.failed << "," << r.mean_wall_s << "," << r.ms_per_step << "\n";
   return os.str();
 }
 

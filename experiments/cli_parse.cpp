@@ -37,9 +37,9 @@ uint64_t ParseSeed(const std::string& text, const std::string& option) {
 std::vector<uint64_t> ParseSeeds(const std::string& text, const std::string& option) {
   const auto dash = text.find('-');
   uint64_t a = 0, b = 0;
-  const bool ok = dash == std::string::npos
-                      ? ParseUnsigned(text, kMaxSeed, &a) && (b = a, true)
-                      : ParseUnsigned(text.substr(0, dash), kMaxSeed, &a) && ParseUnsigned(text.substr(dash + 1), kMaxSeed, &b);
+  const bool ok = dash == std::string::npos ? ParseUnsigned(text, kMaxSeed, &a) && (b = a, true)
+                                            : ParseUnsigned(text.substr(0, dash), kMaxSeed, &a) &&
+                                                  ParseUnsigned(text.substr(dash + 1), kMaxSeed, &b);
   if (!ok || b < a || b - a >= 1000000)
     throw core::ConfigError("<command line>", option, text,
                             "expected N or A-B with A <= B, at most a million seeds, each in " + SeedRange());

@@ -11,7 +11,8 @@ FreeSpaceRegions::FreeSpaceRegions(const core::World& world, double radius, doub
   TOPONAV_CHECK(cell > 0 && radius >= 0, "free-space raster with cell " << cell << ", radius " << radius);
   raster_ = planning::Raster::Covering(world.bounds, cell);
   free_.assign(raster_.size(), 0);
-  for (int c = 0; c < int(raster_.size()); ++c) free_[size_t(c)] = core::SignedDistance(world, raster_.Center(c), false) > radius;
+  for (int c = 0; c < int(raster_.size()); ++c)
+    free_[size_t(c)] = core::SignedDistance(world, raster_.Center(c), false) > radius;
   regions_ = Count({});
 }
 

@@ -51,7 +51,8 @@ class ExportWriter {
 // Writes the dataset (README "Training data" documents the layout): DIR/dataset.json, DIR/index.csv,
 // DIR/<split>/NNNNNN.png (panorama) and NNNNNN_labels.png (the grid: 0 no vertex, 1-4 the label), and
 // DIR/contact_sheet.png with the labels drawn on the first panoramas.  'max_samples' > 0 caps each split.
-ExportSummary ExportDataset(const DatagenOptions& options, const sim::WorldOptions& worlds, const sim::RenderOptions& render,
-                            const core::RangeBearingGrid& grid, const std::string& out_dir, int max_samples = 0);
+ExportSummary ExportDataset(const DatagenOptions& options, const sim::WorldOptions& worlds,
+                            const sim::RenderOptions& render, const core::RangeBearingGrid& grid,
+                            const std::string& out_dir, int max_samples = 0);
 
 }  // namespace toponav::experiments

@@ -28,8 +28,8 @@ class Canvas {
     const double longest = std::max(b.width(), b.height()) + 2 * kMargin;
     if (longest * scale_ > o.max_pixels) scale_ = o.max_pixels / longest;
     origin_ = {b.min.x - kMargin, b.max.y + kMargin};
-    image = cv::Mat(int(std::ceil((b.height() + 2 * kMargin) * scale_)), int(std::ceil((b.width() + 2 * kMargin) * scale_)),
-                    CV_8UC3, cv::Scalar(70, 70, 70));
+    image = cv::Mat(int(std::ceil((b.height() + 2 * kMargin) * scale_)),
+                    int(std::ceil((b.width() + 2 * kMargin) * scale_)), CV_8UC3, cv::Scalar(70, 70, 70));
   }
   cv::Point Px(const Vec2& p) const {
     return {int(std::lround((p.x - origin_.x) * scale_)), int(std::lround((origin_.y - p.y) * scale_))};
@@ -145,7 +145,8 @@ void WriteContactSheet(const std::vector<sim::Panorama>& panos, const std::vecto
     bgr.copyTo(sheet(cv::Rect(0, y, w, panos[i].height)));
     if (i < captions.size()) {
       cv::putText(sheet, captions[i], {6, y + 14}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 3, cv::LINE_AA);
-      cv::putText(sheet, captions[i], {6, y + 14}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+      cv::putText(sheet, captions[i], {6, y + 14}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(255, 255, 255), 1,
+                  cv::LINE_AA);
     }
     y += panos[i].height + gap;
   }
@@ -190,10 +191,12 @@ void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
   }
   for (const auto& w : map.walls) cv::line(c.image, c.Px(w.pa), c.Px(w.pb), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
   for (const auto& b : extras.blocks) cv::line(c.image, c.Px(b.a), c.Px(b.b), cv::Scalar(0, 140, 255), 3, cv::LINE_AA);
-  for (const auto& v : map.vertices) cv::circle(c.image, c.Px(v.position), 3, cv::Scalar(0, 0, 0), cv::FILLED, cv::LINE_AA);
+  for (const auto& v : map.vertices)
+    cv::circle(c.image, c.Px(v.position), 3, cv::Scalar(0, 0, 0), cv::FILLED, cv::LINE_AA);
   for (const auto& v : map.rejected) cv::circle(c.image, c.Px(v.position), 4, cv::Scalar(0, 0, 230), 2, cv::LINE_AA);
   for (size_t a = 0; a < agent_paths.size(); ++a)
-    if (!agent_paths[a].empty()) cv::circle(c.image, c.Px(agent_paths[a].back()), c.Len(1.0) + 2, kAgentColours[a % 3], cv::FILLED, cv::LINE_AA);
+    if (!agent_paths[a].empty())
+      cv::circle(c.image, c.Px(agent_paths[a].back()), c.Len(1.0) + 2, kAgentColours[a % 3], cv::FILLED, cv::LINE_AA);
   if (extras.goal) {
     cv::circle(c.image, c.Px(*extras.goal), c.Len(2.5), kGoal, cv::FILLED, cv::LINE_AA);
     cv::circle(c.image, c.Px(*extras.goal), c.Len(2.5), kWall, 1, cv::LINE_AA);
@@ -272,7 +275,8 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
     const auto best = std::max_element(d.labels.begin(), d.labels.end());
     const int half = c.Len(1.5) + 3 + int(std::lround(6 * *best));
     const cv::Point p = c.Px(core::DetectionPosition(pose, d));
-    cv::rectangle(c.image, p - cv::Point(half, half), p + cv::Point(half, half), colours[best - d.labels.begin()], 2, cv::LINE_AA);
+    cv::rectangle(c.image, p - cv::Point(half, half), p + cv::Point(half, half), colours[best - d.labels.begin()], 2,
+                  cv::LINE_AA);
   }
   DrawAgent(c, pose, kStart);
   c.Save(png_path);
@@ -305,7 +309,9 @@ void WriteStepsPlot(const std::vector<TrialRecord>& records, const std::string& 
     for (const auto& [s, c] : seeds) v.push_back(c);
     std::sort(v.begin(), v.end());
     cv::rectangle(img, {margin, top + 20}, {pw - 10, top + ph - margin}, cv::Scalar(180, 180, 180), 1);
-    cv::putText(img, std::string(core::ToString(static_cast<core::WorldKind>(kind))) + ": steps per trial (blue 1 agent, orange team)",
+    cv::putText(img,
+                std::string(core::ToString(static_cast<core::WorldKind>(kind))) +
+                    ": steps per trial (blue 1 agent, orange team)",
                 {margin, top + 14}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
     cv::putText(img, std::to_string(max_steps), {2, top + 28}, cv::FONT_HERSHEY_SIMPLEX, 0.35, cv::Scalar(0, 0, 0), 1);
     cv::putText(img, "0", {20, top + ph - margin}, cv::FONT_HERSHEY_SIMPLEX, 0.35, cv::Scalar(0, 0, 0), 1);

@@ -47,7 +47,8 @@ int RunWorld(const WorldArgs& a) {
   EnsureDir(a.out);
   if (!a.world_file.empty()) {
     const core::World w = sim::LoadWorld(a.world_file);  // (validated: a file that loads can be run)
-    fmt::print("read {} ({} vertices, {} clutter items)\n", a.world_file, core::MapVertices(w).size(), w.clutter.size());
+    fmt::print("read {} ({} vertices, {} clutter items)\n", a.world_file, core::MapVertices(w).size(),
+               w.clutter.size());
     if (!a.no_png) {
       const std::string png = (fs::path(a.out) / "world.png").string();
       experiments::DrawWorldPicture(w, cfg.picture, png);
@@ -131,7 +132,8 @@ struct BenchArgs {
 int RunBench(BenchArgs a) {
   experiments::Config cfg = experiments::LoadConfig(a.config);
   if (cfg.bench.rows.empty()) throw core::ConfigError(a.config, "bench.rows", "[]", "list at least one row");
-  const std::vector<uint64_t> seed_override = a.seeds.empty() ? std::vector<uint64_t>{} : experiments::ParseSeeds(a.seeds);
+  const std::vector<uint64_t> seed_override =
+      a.seeds.empty() ? std::vector<uint64_t>{} : experiments::ParseSeeds(a.seeds);
   // (pictures: failures also draws each row's first seed)
   if (!seed_override.empty()) cfg.bench.first_seed = *std::min_element(seed_override.begin(), seed_override.end());
   a.batch.out_dir = a.out.empty() ? "results/" + cfg.bench.name : a.out;
@@ -139,8 +141,8 @@ int RunBench(BenchArgs a) {
   if (!a.shard.empty()) experiments::ParseShard(a.shard, &a.batch.shard_index, &a.batch.shard_count);
   const auto trials = experiments::ListTrials(cfg.bench, seed_override);
   a.batch.stamp = experiments::BatchStamp(a.config, trials);
-  fmt::print("toponav bench {}: {} trials ({} rows), results in {}\n", cfg.bench.name, trials.size(), cfg.bench.rows.size(),
-             a.batch.out_dir);
+  fmt::print("toponav bench {}: {} trials ({} rows), results in {}\n", cfg.bench.name, trials.size(),
+             cfg.bench.rows.size(), a.batch.out_dir);
   const auto s = experiments::RunBatch(cfg, a.batch, trials);
   fmt::print("{} of {} trials were already done; ran {} ({} failed) in {:.1f} s\n", s.already_done, s.total, s.ran,
              s.failed, s.wall_s);
@@ -192,7 +194,8 @@ int RunInfo(bool prefer_cuda) {
 }
 
 CLI::App* AddWorldCommand(CLI::App& app, WorldArgs* a) {
-  CLI::App* world = app.add_subcommand("world", "Generate procedural worlds: writes world.json and a top-down world.png");
+  CLI::App* world =
+      app.add_subcommand("world", "Generate procedural worlds: writes world.json and a top-down world.png");
   world->add_option("--kind", a->kind, "World kind: labyrinth, office_park or guided_maze");
   world->add_option("--seed,--seeds", a->seeds, "Seed N, or an inclusive range A-B (files then named KIND_sSEED)")
       ->capture_default_str();
@@ -200,22 +203,28 @@ CLI::App* AddWorldCommand(CLI::App& app, WorldArgs* a) {
   world->add_option("--config", a->config, "YAML config with generator options (e.g. configs/demo.yaml)");
   world->add_option("--world", a->world_file, "Instead of generating, read this world.json and draw it");
   world->add_flag("--no-png", a->no_png, "Skip the pictures (faster for many seeds)");
-  world->add_flag("--check", a->check, "Check every world (one connected free space, building gaps, guide path); exit 3 on problems");
+  world->add_flag("--check", a->check,
+                  "Check every world (one connected free space, building gaps, guide path); exit 3 on problems");
   return world;
 }
 
 CLI::App* AddBenchCommand(CLI::App& app, BenchArgs* a) {
   CLI::App* bench = app.add_subcommand("bench", "Run a search benchmark (paper Table I): trials in parallel processes, "
                                              "JSON lines, resumable, shardable; prints the table");
-  bench->add_option("--config", a->config, "Benchmark config (bench: rows, seeds, max_steps, ...)")->capture_default_str();
+  bench->add_option("--config", a->config, "Benchmark config (bench: rows, seeds, max_steps, ...)")
+      ->capture_default_str();
   bench->add_option("--out", a->out, "Results directory (default results/<bench.name>)");
-  bench->add_option("--workers", a->batch.workers, "Parallel trial processes (default: all cores)")->check(CLI::Range(0, 256));
+  bench->add_option("--workers", a->batch.workers, "Parallel trial processes (default: all cores)")
+      ->check(CLI::Range(0, 256));
   bench->add_option("--shard", a->shard, "Run only shard i of N (i/N, 0-based), e.g. 0/4 for a cluster job array");
   bench->add_option("--seeds", a->seeds, "Override the config's seeds: N or A-B");
-  bench->add_option("--max-trials", a->batch.max_new_trials, "Stop after this many new trials (resume later)")->check(CLI::Range(0, 100000000));
+  bench->add_option("--max-trials", a->batch.max_new_trials, "Stop after this many new trials (resume later)")
+      ->check(CLI::Range(0, 100000000));
   bench->add_flag("--quiet", a->quiet, "No progress lines");
-  bench->add_flag("--fresh", a->batch.fresh, "Discard the results directory's trials first (they came from another build or config)");
-  bench->add_option("--fail-trial", a->batch.fail_key, "Testing: make this trial (e.g. labyrinth/a1/s10000) throw")->group("");
+  bench->add_flag("--fresh", a->batch.fresh,
+                  "Discard the results directory's trials first (they came from another build or config)");
+  bench->add_option("--fail-trial", a->batch.fail_key, "Testing: make this trial (e.g. labyrinth/a1/s10000) throw")
+      ->group("");
   bench->add_option("--crash-trial", a->batch.crash_key, "Testing: make this trial's process crash")->group("");
   return bench;
 }
@@ -235,12 +244,16 @@ int main(int argc, char** argv) {
   cli::LearningCommands learning_commands(app);
   std::vector<std::string> report_dirs;
   std::string report_out;
-  auto* report = app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");
+  auto* report =
+      app.add_subcommand("report", "Merge results directories (shards) into the Table I layout: Markdown, CSV, plot");
   report->add_option("dirs", report_dirs, "Results directories")->required();
-  report->add_option("--out", report_out, "Where to write report.md, report.csv, steps.png (default: the first directory)");
+  report->add_option("--out", report_out,
+                     "Where to write report.md, report.csv, steps.png (default: the first directory)");
 
   std::string demo_config = "configs/demo.yaml", demo_out;
-  auto* demo = app.add_subcommand("demo", "The default job: one world of each kind: its JSON, top-down picture, observation and panorama under results/");
+  auto* demo = app.add_subcommand(
+      "demo",
+      "The default job: one world of each kind: its JSON, top-down picture, observation and panorama under results/");
   demo->add_option("--config", demo_config, "Job config")->capture_default_str();
   demo->add_option("--out", demo_out, "Output directory (default: demo.out_dir of the config)");
 

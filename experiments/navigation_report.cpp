@@ -96,22 +96,26 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
 std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, const std::vector<TrialRecord>& records) {
   std::ostringstream os;
   os << "| environment | planner | reached goal | mean cost | total cost | reduction vs optimistic | median cost ratio "
-        "| cost / shortest | mean steps | mean IoU | failed runs | s/trial |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| cost / shortest | mean steps | mean IoU | failed runs | s/trial "
+        "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
     char reduction[64] = "-", ratio[32] = "-", detour[32] = "-";
-    if (!std::isnan(r.reduction)) std::snprintf(reduction, sizeof reduction, "%.1f %% (%d seeds)", 100 * r.reduction, r.paired);
+    if (!std::isnan(r.reduction))
+      std::snprintf(reduction, sizeof reduction, "%.1f %% (%d seeds)", 100 * r.reduction, r.paired);
     if (!std::isnan(r.median_ratio)) std::snprintf(ratio, sizeof ratio, "%.3f", r.median_ratio);
     if (!std::isnan(r.over_shortest)) std::snprintf(detour, sizeof detour, "%.3f", r.over_shortest);
     char buf[400];
     std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %s | %.1f | %.4f | %d | %.1f |\n",
-                  core::ToString(r.kind), r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction, ratio,
-                  detour, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s);
+                  core::ToString(r.kind), r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction,
+                  ratio, detour, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s);
     os << buf;
   }
   std::vector<std::string> short_of_goal;
   for (const auto& r : records)
     if (!r.id.planner.empty() && (!r.ok || !r.success))
-      short_of_goal.push_back("- " + r.id.Key() + ": " + (r.ok ? r.end_reason + " after " + std::to_string(r.steps) + " steps" : "failed: " + r.error));
+      short_of_goal.push_back(
+          "- " + r.id.Key() + ": " +
+          (r.ok ? r.end_reason + " after " + std::to_string(r.steps) + " steps" : "failed: " + r.error));
   if (!short_of_goal.empty()) {
     os << "\nShort of the goal (" << short_of_goal.size() << "):\n";
     for (const auto& line : short_of_goal) os << line << "\n";
@@ -121,7 +125,8 @@ std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, con
 
 std::string NavigationCsv(const std::vector<NavigationReportRow>& rows) {
   std::ostringstream os;
-  os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,median_ratio,over_shortest,mean_steps,"
+  os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,median_ratio,over_shortest,"
+        "mean_steps,"
         "mean_iou,mean_wall_s\n";
   for (const auto& r : rows)
     os << core::ToString(r.kind) << "," << r.planner << "," << r.trials << "," << r.reached << "," << r.failed << ","
@@ -136,14 +141,16 @@ void DrawPanel(cv::Mat& img, int left, const std::string& title, const std::vect
                double max_cost) {
   const int size = 420, margin = 45;
   const auto px = [&](double x, double y) {
-    return cv::Point(left + margin + int((size - margin - 10) * x / max_cost), size - margin - int((size - margin - 30) * y / max_cost));
+    return cv::Point(left + margin + int((size - margin - 10) * x / max_cost),
+                     size - margin - int((size - margin - 30) * y / max_cost));
   };
   const cv::Scalar grey(170, 170, 170), black(0, 0, 0);
   cv::rectangle(img, px(0, max_cost), px(max_cost, 0), grey, 1);
   cv::line(img, px(0, 0), px(max_cost, max_cost), cv::Scalar(60, 160, 60), 1, cv::LINE_AA);
   for (const auto& [x, y] : points) cv::circle(img, px(x, y), 3, cv::Scalar(200, 100, 20), cv::FILLED, cv::LINE_AA);
   cv::putText(img, title, {left + 8, 16}, cv::FONT_HERSHEY_SIMPLEX, 0.42, black, 1, cv::LINE_AA);
-  cv::putText(img, "optimistic cost ->", {left + margin + 10, size - 12}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1, cv::LINE_AA);
+  cv::putText(img, "optimistic cost ->", {left + margin + 10, size - 12}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1,
+              cv::LINE_AA);
   char top[32];
   std::snprintf(top, sizeof top, "%.0f", max_cost);
   cv::putText(img, top, {left + 4, px(0, max_cost).y + 10}, cv::FONT_HERSHEY_SIMPLEX, 0.35, black, 1, cv::LINE_AA);
@@ -172,7 +179,8 @@ void WriteCostScatter(const std::vector<TrialRecord>& records, const std::string
   }
   if (panels.empty()) return;
   cv::Mat img(420, 420 * int(panels.size()), CV_8UC3, cv::Scalar(255, 255, 255));
-  for (size_t i = 0; i < panels.size(); ++i) DrawPanel(img, 420 * int(i), panels[i].first, panels[i].second, 1.05 * max_cost);
+  for (size_t i = 0; i < panels.size(); ++i)
+    DrawPanel(img, 420 * int(i), panels[i].first, panels[i].second, 1.05 * max_cost);
   internal::SavePicture(img, png_path);
 }
 

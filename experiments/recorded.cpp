@@ -75,7 +75,8 @@ Recording ReadRecording(const std::string& dir, const std::string& poses_csv) {
   return rec;
 }
 
-void WriteRecording(const std::string& dir, const std::vector<core::Pose2>& poses, const std::vector<core::Panorama>& panoramas) {
+void WriteRecording(const std::string& dir, const std::vector<core::Pose2>& poses,
+                    const std::vector<core::Panorama>& panoramas) {
   TOPONAV_CHECK(poses.size() == panoramas.size(), poses.size() << " poses for " << panoramas.size() << " panoramas");
   std::string csv = "image,x,y,yaw\n";
   for (size_t i = 0; i < poses.size(); ++i) {
@@ -100,7 +101,8 @@ core::Panorama ReadPanorama(const std::string& path) {
   p.width = rgb.cols;
   p.height = rgb.rows;
   p.rgb.resize(size_t(p.width) * size_t(p.height) * 3);
-  for (int r = 0; r < p.height; ++r) std::copy(rgb.ptr<uint8_t>(r), rgb.ptr<uint8_t>(r) + 3 * p.width, p.rgb.data() + 3 * size_t(r) * p.width);
+  for (int r = 0; r < p.height; ++r)
+    std::copy(rgb.ptr<uint8_t>(r), rgb.ptr<uint8_t>(r) + 3 * p.width, p.rgb.data() + 3 * size_t(r) * p.width);
   return p;
 }
 
@@ -128,7 +130,8 @@ class RecordedSensor : public core::VertexSensorInterface {
         throw core::DataError(path, e.what());
       }
     }
-    throw core::DataError(rec_.dir, fmt::format("the recording holds no panorama at pose {:.6g},{:.6g},{:.6g}", pose.x, pose.y, pose.yaw));
+    throw core::DataError(rec_.dir, fmt::format("the recording holds no panorama at pose {:.6g},{:.6g},{:.6g}", pose.x,
+                                                pose.y, pose.yaw));
   }
 
  private:
@@ -143,8 +146,8 @@ double MsSince(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-std::unique_ptr<core::VertexSensorInterface> CreateRecordedSensor(Recording recording,
-                                                                  std::unique_ptr<core::VertexDetectorInterface> detector) {
+std::unique_ptr<core::VertexSensorInterface> CreateRecordedSensor(
+    Recording recording, std::unique_ptr<core::VertexDetectorInterface> detector) {
   TOPONAV_CHECK(detector != nullptr, "a recorded sensor needs a detector");
   return std::make_unique<RecordedSensor>(std::move(recording), std::move(detector));
 }

@@ -8,8 +8,9 @@
 // (x, y in world units, yaw in radians counter-clockwise from +x).  Column j of a panorama looks along bearing
 // -pi + 2*pi*j/512 counter-clockwise from the heading (core::ColumnToBearing): the centre column looks straight
 // ahead and the columns right of it look to the robot's LEFT, so a camera whose panorama turns clockwise from
-// left to right must be flipped horizontally first.  Row 0 is the top; the horizon is the middle row.  `toponav render --sequence DIR` writes one from a simulated world; `toponav map --images DIR`
-// builds the map from one with an image detector behind the sensor factory (`sensor: {kind: recorded}`).
+// left to right must be flipped horizontally first.  Row 0 is the top; the horizon is the middle row.  `toponav render
+// --sequence DIR` writes one from a simulated world; `toponav map --images DIR` builds the map from one with an image
+// detector behind the sensor factory (`sensor: {kind: recorded}`).
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,7 +37,8 @@ struct Recording {
 Recording ReadRecording(const std::string& dir, const std::string& poses_csv = "");
 
 // Writes the panoramas as DIR/pano_NNNNN.png and DIR/poses.csv.
-void WriteRecording(const std::string& dir, const std::vector<core::Pose2>& poses, const std::vector<core::Panorama>& panoramas);
+void WriteRecording(const std::string& dir, const std::vector<core::Pose2>& poses,
+                    const std::vector<core::Panorama>& panoramas);
 
 // An 8-bit colour image file as an RGB panorama (alpha dropped, grey expanded).  Throws core::DataError naming
 // the file if it cannot be read.
@@ -45,11 +47,12 @@ core::Panorama ReadPanorama(const std::string& path);
 // A pose-in sensor that replays a recording: Observe(pose) runs the detector on the frame taken at 'pose'
 // (the next frame in order whose pose equals it within 1e-6; a pose the recording does not hold is a
 // core::DataError).
-std::unique_ptr<core::VertexSensorInterface> CreateRecordedSensor(Recording recording,
-                                                                  std::unique_ptr<core::VertexDetectorInterface> detector);
+std::unique_ptr<core::VertexSensorInterface> CreateRecordedSensor(
+    Recording recording, std::unique_ptr<core::VertexDetectorInterface> detector);
 
 struct RecordedMapOptions {
-  int mcmc_every = 5;  // MCMC every this many frames (and once at the end); 0: never (every vertex with enough detections kept)
+  // MCMC every this many frames (and once at the end); 0: never (every vertex with enough detections kept).
+  int mcmc_every = 5;
   uint64_t seed = 0;   // MCMC randomness
 };
 

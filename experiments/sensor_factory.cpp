@@ -72,7 +72,8 @@ std::unique_ptr<core::VertexDetectorInterface> LearnedDetector(const LearnedSens
 
 std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& config, const SensorSetup& setup) {
   config.Validate();
-  TOPONAV_CHECK(setup.world != nullptr || config.kind == SensorKind::kRecorded, "a " << ToString(config.kind) << " sensor needs a world");
+  TOPONAV_CHECK(setup.world != nullptr || config.kind == SensorKind::kRecorded,
+                "a " << ToString(config.kind) << " sensor needs a world");
   switch (config.kind) {
     case SensorKind::kNoisy: return sim::CreateNoisyGroundTruthSensor(*setup.world, config.noisy, setup.seed);
     case SensorKind::kLearned:

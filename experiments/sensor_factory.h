@@ -49,8 +49,8 @@ struct SensorConfig {
   void Validate() const;          // throws core::ConfigError ("sensor.max_range", "sensor.model", ...)
 };
 
-// What the sensor is for: the world it observes (and renders; none for a recording), the render options of image-based kinds, the
-// goal of goal-directed runs (passed to goal-conditioned detectors), and the seed of its randomness.
+// What the sensor is for: the world it observes (and renders; none for a recording), the render options of image-based
+// kinds, the goal of goal-directed runs (passed to goal-conditioned detectors), and the seed of its randomness.
 struct SensorSetup {
   const core::World* world = nullptr;
   sim::RenderOptions render;

@@ -45,7 +45,8 @@ double CentroidOffset(float before, float at, float after) {
 
 // The peak's range and bearing, refined within its cell by the centroid along each axis (range rows beyond
 // the grid count as 0; bearing wraps around).
-std::pair<double, double> RefinedRangeBearing(const std::vector<float>& prob, const core::RangeBearingGrid& g, const Peak& p) {
+std::pair<double, double> RefinedRangeBearing(const std::vector<float>& prob, const core::RangeBearingGrid& g,
+                                              const Peak& p) {
   auto at = [&](int r, int c) { return r < 0 || r >= g.rows ? 0.0f : prob[g.Index(r, (c + g.cols) % g.cols)]; };
   const double dr = CentroidOffset(at(p.row - 1, p.col), p.value, at(p.row + 1, p.col));
   const double dc = CentroidOffset(at(p.row, p.col - 1), p.value, at(p.row, p.col + 1));
@@ -56,7 +57,8 @@ std::pair<double, double> RefinedRangeBearing(const std::vector<float>& prob, co
 }  // namespace
 
 std::vector<Peak> DetectPeaks(const std::vector<float>& prob, const core::RangeBearingGrid& grid, float threshold) {
-  TOPONAV_CHECK(prob.size() == grid.size(), "probability map of " << prob.size() << " cells for a grid of " << grid.size());
+  TOPONAV_CHECK(prob.size() == grid.size(),
+                "probability map of " << prob.size() << " cells for a grid of " << grid.size());
   std::vector<char> on(grid.size()), seen(grid.size(), 0);
   for (size_t i = 0; i < prob.size(); ++i) on[i] = prob[i] >= threshold - 0.1f;
   std::vector<Peak> peaks;
@@ -67,7 +69,8 @@ std::vector<Peak> DetectPeaks(const std::vector<float>& prob, const core::RangeB
       const Peak p = FloodComponent(prob, on, grid, r, c, &seen);
       if (p.value > threshold) peaks.push_back(p);
     }
-  std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.col != b.col ? a.col < b.col : a.row < b.row; });
+  std::sort(peaks.begin(), peaks.end(),
+            [](const Peak& a, const Peak& b) { return a.col != b.col ? a.col < b.col : a.row < b.row; });
   return peaks;
 }
 

@@ -16,7 +16,8 @@ struct Peak {
 };
 
 // 'prob': grid.size() vertex probabilities, row-major.  Peaks sorted by column, then row.
-std::vector<Peak> DetectPeaks(const std::vector<float>& prob, const core::RangeBearingGrid& grid, float threshold = 0.5f);
+std::vector<Peak> DetectPeaks(const std::vector<float>& prob, const core::RangeBearingGrid& grid,
+                              float threshold = 0.5f);
 
 struct DecodeOptions {
   float threshold = 0.5f;

@@ -14,7 +14,7 @@ struct TrainOptions {
   int batch_size = 8;
   int steps = 1000;             // Adam steps in all
   double learning_rate = 1e-3;
-  double decay_to = 1.0;        // from step decay_start the learning rate falls along a cosine to learning_rate * decay_to
+  double decay_to = 1.0;  // from step decay_start the learning rate falls along a cosine to learning_rate * decay_to
   int decay_start = 0;          // at the last step (decay_to 1: constant)
   int validate_every = 100;     // steps between validations (and checkpoints)
   int threads = 2;              // CPU threads (0: LibTorch's default)

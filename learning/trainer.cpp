@@ -201,7 +201,8 @@ void CheckExamples(const TrainingSet& data, const TrainOptions& o) {
   if (o.subgoal)
     for (const auto* split : {&data.train, &data.val})
       for (const auto& e : *split)
-        if (!e.subgoal) throw core::ConfigError("<options>", "train.subgoal", "true", "every example needs subgoal labels");
+        if (!e.subgoal)
+          throw core::ConfigError("<options>", "train.subgoal", "true", "every example needs subgoal labels");
 }
 
 // A fresh model for the options: random weights, or those of options.init_from where they fit.

@@ -29,7 +29,8 @@ struct VertexNetOptions {
   double positive_weight = 8.0;
   double vertex_weight = 500.0;
   bool operator==(const VertexNetOptions& o) const {
-    return width == o.width && positive_weight == o.positive_weight && vertex_weight == o.vertex_weight && subgoal == o.subgoal;
+    return width == o.width && positive_weight == o.positive_weight && vertex_weight == o.vertex_weight &&
+           subgoal == o.subgoal;
   }
 };
 

@@ -84,7 +84,8 @@ void CheckObservation(const MapperOptions& o, const core::Observation& z) {
   for (size_t k = 0; k < z.detections.size(); ++k) {
     const auto& d = z.detections[k];
     const std::string at = "detection " + std::to_string(k) + ": ";
-    if (!std::isfinite(d.range) || !std::isfinite(d.bearing) || d.range < 0) bad(at + "range/bearing is NaN, infinite or negative");
+    if (!std::isfinite(d.range) || !std::isfinite(d.bearing) || d.range < 0)
+      bad(at + "range/bearing is NaN, infinite or negative");
     const auto& c = d.polar;
     if (!std::isfinite(c.xx) || !std::isfinite(c.xy) || !std::isfinite(c.yy) || c.xx <= 0 || c.yy <= 0 ||
         c.xx * c.yy - c.xy * c.xy <= 0)
@@ -108,7 +109,8 @@ struct Mapper::Impl {
 
   const internal::MapState& ViewMap() {
     if (!core.o.defer_to_mcmc) view_map = core.walls.State(core.vertices);
-    if (view_map.mapped.size() < core.vertices.size()) view_map.mapped.resize(core.vertices.size(), 0);  // newer vertices: not yet in
+    const size_t n = core.vertices.size();
+    if (view_map.mapped.size() < n) view_map.mapped.resize(n, 0);  // newer vertices: not yet in
     return view_map;
   }
   void Add(const core::Observation& z);
@@ -153,7 +155,8 @@ MapView Mapper::Impl::MakeView(double tolerance) {
     const MapVertex mv{int(i), internal::ToVec(x.x), internal::FromEigen(x.P), x.n};
     (ms.mapped[i] ? view.vertices : view.rejected).push_back(mv);
   }
-  for (const auto& [a, b] : ms.walls) view.walls.push_back({a, b, core.Pos(a), core.Pos(b), core.walls.Prob(a, b, ms.mapped)});
+  for (const auto& [a, b] : ms.walls)
+    view.walls.push_back({a, b, core.Pos(a), core.Pos(b), core.walls.Prob(a, b, ms.mapped)});
   view.known_space = known.total().Polygons();
   view.known_set = std::make_shared<const PolygonSet>(known.total());
   view.frontiers = frontiers.Extract(core, ms, view.known_space);
@@ -170,8 +173,8 @@ Mapper::~Mapper() = default;
 void Mapper::AddObservation(const core::Observation& z) { impl_->Add(z); }
 
 double Mapper::SampleMostLikelyMap(core::Rng& rng, int samples) {
-  const double gain = internal::SampleMostLikelyMap(&impl_->core, rng, samples < 0 ? impl_->core.o.mcmc_samples : samples,
-                                                    &impl_->stats);
+  const double gain = internal::SampleMostLikelyMap(&impl_->core, rng,
+                                                    samples < 0 ? impl_->core.o.mcmc_samples : samples, &impl_->stats);
   impl_->view_map = impl_->core.walls.State(impl_->core.vertices);
   return gain;
 }

@@ -81,7 +81,8 @@ bool BlockerInTriangle(const Vec2& c, const Vec2& a, const Vec2& b, const std::v
         std::min(s.a.y, s.b.y) > maxy)
       continue;
     if (core::Contains(tri, s.a) || core::Contains(tri, s.b)) return true;
-    if (core::SegmentsIntersect(s, {t0, t1}) || core::SegmentsIntersect(s, {t1, t2}) || core::SegmentsIntersect(s, {t2, t0}))
+    if (core::SegmentsIntersect(s, {t0, t1}) || core::SegmentsIntersect(s, {t1, t2}) ||
+        core::SegmentsIntersect(s, {t2, t0}))
       return true;
   }
   return false;

@@ -60,7 +60,8 @@ void CellAveragingEstimator::Accumulate(const Seen& s, const SubgoalGrid& grid) 
     }
 }
 
-std::vector<SubgoalProperties> CellAveragingEstimator::Estimate(const SubgoalGrid& grid, const OrderingProblem& distances) {
+std::vector<SubgoalProperties> CellAveragingEstimator::Estimate(const SubgoalGrid& grid,
+                                                                const OrderingProblem& distances) {
   for (const Seen& s : pending_) Accumulate(s, grid);
   pending_.clear();
   const size_t n = distances.properties.size();
@@ -75,7 +76,8 @@ std::vector<SubgoalProperties> CellAveragingEstimator::Estimate(const SubgoalGri
       total.exploration += it->second.exploration;
       total.count += it->second.count;
     }
-    if (total.count > 0) out[f] = {total.ps / total.count, total.delta_success / total.count, total.exploration / total.count};
+    if (total.count > 0)
+      out[f] = {total.ps / total.count, total.delta_success / total.count, total.exploration / total.count};
   }
   return out;
 }

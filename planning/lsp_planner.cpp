@@ -48,7 +48,8 @@ class LspPlanner : public Planner {
   }
 
   std::vector<FrontierChoice> Plan(const PlanningProblem& p) override {
-    TOPONAV_CHECK(p.view && p.graph && p.targets && p.goal && p.agents.size() == 1, "LSP plans for one agent with a goal");
+    TOPONAV_CHECK(p.view && p.graph && p.targets && p.goal && p.agents.size() == 1,
+                  "LSP plans for one agent with a goal");
     decision_ = {};
     FrontierChoice c;
     const int subgoal = ChooseSubgoal(p);
@@ -80,7 +81,8 @@ class LspPlanner : public Planner {
     if (grid.goal_known()) return -1;
     OrderingProblem problem = grid.Distances();
     const std::vector<SubgoalProperties> estimates = estimator_->Estimate(grid, problem);
-    TOPONAV_CHECK(estimates.size() == frontiers.size(), estimates.size() << " estimates for " << frontiers.size() << " frontiers");
+    TOPONAV_CHECK(estimates.size() == frontiers.size(), estimates.size()
+                                                            << " estimates for " << frontiers.size() << " frontiers");
     for (size_t f = 0; f < frontiers.size(); ++f) problem.properties[f] = Clamped(estimates[f]);
     const std::vector<int> chosen = SelectFrontiers(problem, o_.max_frontiers);
     const Ordering best = BestOrdering(Restrict(problem, chosen));

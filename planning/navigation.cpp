@@ -151,11 +151,13 @@ bool VisibilityGraph::StaysKnown(const Vec2& a, const Vec2& b) const {
   if (require_known_) {
     // Inside known space: the midpoint is inside and the segment crosses no known-space boundary edge.
     if (!InKnown(*view_, (a + b) * 0.5)) return false;
-    const double minx = std::min(a.x, b.x), maxx = std::max(a.x, b.x), miny = std::min(a.y, b.y), maxy = std::max(a.y, b.y);
+    const double minx = std::min(a.x, b.x), maxx = std::max(a.x, b.x), miny = std::min(a.y, b.y),
+                 maxy = std::max(a.y, b.y);
     auto crosses = [&](const core::Ring& ring) {
       for (size_t i = 0, n = ring.size(); i < n; ++i) {
         const Vec2 p = ring[i], q = ring[(i + 1) % n];
-        if (std::max(p.x, q.x) < minx || std::min(p.x, q.x) > maxx || std::max(p.y, q.y) < miny || std::min(p.y, q.y) > maxy)
+        if (std::max(p.x, q.x) < minx || std::min(p.x, q.x) > maxx || std::max(p.y, q.y) < miny ||
+            std::min(p.y, q.y) > maxy)
           continue;
         if (core::SegmentsIntersect(s, {p, q})) return true;
       }
@@ -359,7 +361,8 @@ void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall) {
   view->walls.push_back({id, id + 1, wall.a, wall.b, 1.0});
 }
 
-std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view, const std::vector<FrontierTarget>& targets) {
+std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view,
+                                                      const std::vector<FrontierTarget>& targets) {
   std::vector<const mapping::Frontier*> out;
   for (const auto& t : targets)
     for (const auto& f : view.frontiers)

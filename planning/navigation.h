@@ -101,7 +101,8 @@ void AddWalls(mapping::MapView* view, const std::vector<core::Vec2>& polyline, b
 void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall);
 
 // The frontiers of 'view' the targets name, in the targets' order.
-std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view, const std::vector<FrontierTarget>& targets);
+std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view,
+                                                      const std::vector<FrontierTarget>& targets);
 
 // One agent's choice: the frontier it heads for and the path there.
 struct FrontierChoice {

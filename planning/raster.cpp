@@ -94,7 +94,9 @@ std::vector<double> CellDistances(const Raster& r, const std::vector<char>& pass
       open.push({0.0, s});
     }
   const double straight = r.cell, diagonal = r.cell * std::sqrt(2.0);
-  const auto ok = [&](int x, int y) { return x >= 0 && y >= 0 && x < r.width && y < r.height && passable[size_t(r.Index(x, y))]; };
+  const auto ok = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < r.width && y < r.height && passable[size_t(r.Index(x, y))];
+  };
   while (!open.empty()) {
     const auto [d, c] = open.top();
     open.pop();

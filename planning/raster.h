@@ -32,6 +32,7 @@ std::vector<int> CellsNear(const Raster& raster, const std::vector<core::Vec2>& 
 // Shortest 8-connected distances (world units) from the 'sources' (distance 0) through the cells with
 // passable != 0; a diagonal step needs both cells beside it passable (no cutting a wall's corner).
 // Infinity where unreachable; sources that are not passable are ignored.
-std::vector<double> CellDistances(const Raster& raster, const std::vector<char>& passable, const std::vector<int>& sources);
+std::vector<double> CellDistances(const Raster& raster, const std::vector<char>& passable,
+                                  const std::vector<int>& sources);
 
 }  // namespace toponav::planning

@@ -44,7 +44,8 @@ double SuccessDelta(const std::vector<int>& seeds, const std::vector<double>& ro
 SubgoalGrid::SubgoalGrid(const mapping::MapView& view, const std::vector<const mapping::Frontier*>& frontiers,
                          const Vec2& agent, const Vec2& goal, double cell, const std::optional<core::Aabb2>& region,
                          double margin) {
-  raster_ = region ? Raster::Covering(*region, cell, 2 * cell) : Raster::Covering(ViewBox(view, agent, goal), cell, margin);
+  raster_ =
+      region ? Raster::Covering(*region, cell, 2 * cell) : Raster::Covering(ViewBox(view, agent, goal), cell, margin);
   known_ = FillPolygons(raster_, view.known_space);
   unknown_open_.assign(raster_.size(), 0);
   for (size_t i = 0; i < known_.size(); ++i) unknown_open_[i] = !known_[i];
@@ -150,7 +151,8 @@ std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, co
       const std::vector<double> region = CellDistances(r, unseen, seeds);
       double lo = kInf, hi = -kInf;
       for (size_t c = 0; c < region.size(); ++c)
-        if (std::isfinite(region[c]) && std::isfinite(from_agent[c])) lo = std::min(lo, from_agent[c]), hi = std::max(hi, from_agent[c]);
+        if (std::isfinite(region[c]) && std::isfinite(from_agent[c]))
+          lo = std::min(lo, from_agent[c]), hi = std::max(hi, from_agent[c]);
       if (hi >= lo) s.exploration = 2 * (hi - lo);
     }
     out.push_back(s);

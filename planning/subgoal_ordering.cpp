@@ -76,7 +76,8 @@ Ordering BestOrdering(const OrderingProblem& p) {
       const std::vector<double>& from = p.between[size_t(last)];
       for (uint32_t rest = full & ~s; rest; rest &= rest - 1) {
         const int g = __builtin_ctz(rest);
-        const double c = from[size_t(g)] + attempt[size_t(g)] + fail[size_t(g)] * value[size_t(s | 1u << g) * size_t(n) + size_t(g)];
+        const double c =
+            from[size_t(g)] + attempt[size_t(g)] + fail[size_t(g)] * value[size_t(s | 1u << g) * size_t(n) + size_t(g)];
         if (c < best) best = c, arg = int8_t(g);
       }
       value[size_t(s) * size_t(n) + size_t(last)] = best;
@@ -87,7 +88,8 @@ Ordering BestOrdering(const OrderingProblem& p) {
   out.cost = kInf;
   int first = -1;
   for (int f = 0; f < n; ++f) {
-    const double c = p.robot_cost[size_t(f)] + attempt[size_t(f)] + fail[size_t(f)] * value[(size_t(1) << f) * size_t(n) + size_t(f)];
+    const double c = p.robot_cost[size_t(f)] + attempt[size_t(f)] +
+                     fail[size_t(f)] * value[(size_t(1) << f) * size_t(n) + size_t(f)];
     if (c < out.cost) out.cost = c, first = f;
   }
   if (first < 0) return {};
@@ -117,7 +119,8 @@ std::vector<int> SelectFrontiers(const OrderingProblem& p, int max_frontiers) {
   TOPONAV_CHECK(max_frontiers >= 1, "max_frontiers " << max_frontiers);
   std::vector<int> usable;
   for (int f = 0; f < p.size(); ++f)
-    if (std::isfinite(p.robot_cost[size_t(f)]) && std::isfinite(p.goal_cost[size_t(f)]) && p.properties[size_t(f)].ps > 0)
+    if (std::isfinite(p.robot_cost[size_t(f)]) && std::isfinite(p.goal_cost[size_t(f)]) &&
+        p.properties[size_t(f)].ps > 0)
       usable.push_back(f);
   if (int(usable.size()) <= max_frontiers) return usable;
   const auto optimistic = [&](int f) {

@@ -41,8 +41,8 @@ struct Ordering {
 double OrderingCost(const OrderingProblem& problem, const std::vector<int>& order);
 
 // The order of all frontiers with the least Q, exactly (dynamic programming).  At most kMaxExactFrontiers
-// frontiers (the table has 2^n n entries, 8 MB at 16): pick them first with SelectFrontiers.  Frontiers with an infinite
-// robot or goal cost must have been left out.  Ties go to the lower index.
+// frontiers (the table has 2^n n entries, 8 MB at 16): pick them first with SelectFrontiers.  Frontiers with an
+// infinite robot or goal cost must have been left out.  Ties go to the lower index.
 constexpr int kMaxExactFrontiers = 16;
 Ordering BestOrdering(const OrderingProblem& problem);
 // The same by trying every permutation (tests; n <= 10).

@@ -96,7 +96,9 @@ class NoisyGroundTruthSensor : public core::VertexSensorInterface {
           int dbins = std::abs(cells[i].bb - cells[k].bb);
           dbins = std::min(dbins, o.bearing_bins - dbins);
           if (std::abs(cells[i].rb - cells[k].rb) <= o.merge_bins && dbins <= o.merge_bins) {
-            for (int j = 0; j < 4; ++j) raw[k].labels[size_t(j)] = (raw[k].labels[size_t(j)] * raw[k].weight + raw[i].labels[size_t(j)]) / (raw[k].weight + 1);
+            for (int j = 0; j < 4; ++j)
+              raw[k].labels[size_t(j)] =
+                  (raw[k].labels[size_t(j)] * raw[k].weight + raw[i].labels[size_t(j)]) / (raw[k].weight + 1);
             raw[k].weight += 1;
             merged = true;
             break;
@@ -126,7 +128,8 @@ class NoisyGroundTruthSensor : public core::VertexSensorInterface {
     LabelProbs noise{rng_.Uniform(), rng_.Uniform(), rng_.Uniform(), rng_.Uniform()};
     const double sum = noise[0] + noise[1] + noise[2] + noise[3];
     LabelProbs out;
-    for (size_t j = 0; j < 4; ++j) out[j] = (1 - options_.label_softness) * onehot[j] + options_.label_softness * noise[j] / sum;
+    for (size_t j = 0; j < 4; ++j)
+      out[j] = (1 - options_.label_softness) * onehot[j] + options_.label_softness * noise[j] / sum;
     return out;
   }
 

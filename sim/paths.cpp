@@ -115,7 +115,8 @@ std::vector<Vec2> CoverageTour(const core::World& w, const Vec2& from, double sp
     g.Search(cur, -1, &dist, &parent);
     size_t best = targets.size();
     for (size_t k = 0; k < targets.size(); ++k)
-      if (std::isfinite(dist[size_t(targets[k])]) && (best == targets.size() || dist[size_t(targets[k])] < dist[size_t(targets[best])]))
+      if (std::isfinite(dist[size_t(targets[k])]) &&
+          (best == targets.size() || dist[size_t(targets[k])] < dist[size_t(targets[best])]))
         best = k;
     if (best == targets.size()) break;  // the rest is unreachable
     const std::vector<Vec2> leg = g.Trace(targets[best], parent);

@@ -13,10 +13,14 @@ namespace toponav::sim {
 const core::OptionFields<DatagenOptions>& DatagenOptions::Fields() {
   using O = DatagenOptions;
   static const core::OptionFields<O> fields{
-      {"train_first_seed", &O::train_first_seed, 0, 9999},     {"train_num_seeds", &O::train_num_seeds, 0, 10000},
-      {"val_first_seed", &O::val_first_seed, 0, 9999},         {"val_num_seeds", &O::val_num_seeds, 0, 10000},
-      {"samples_per_world", &O::samples_per_world, 1, 100000}, {"min_clearance", &O::min_clearance, 0.0, 50.0},
-      {"near_wall_fraction", &O::near_wall_fraction, 0.0, 1.0}, {"near_wall_clearance", &O::near_wall_clearance, 0.0, 100.0},
+      {"train_first_seed", &O::train_first_seed, 0, 9999},
+      {"train_num_seeds", &O::train_num_seeds, 0, 10000},
+      {"val_first_seed", &O::val_first_seed, 0, 9999},
+      {"val_num_seeds", &O::val_num_seeds, 0, 10000},
+      {"samples_per_world", &O::samples_per_world, 1, 100000},
+      {"min_clearance", &O::min_clearance, 0.0, 50.0},
+      {"near_wall_fraction", &O::near_wall_fraction, 0.0, 1.0},
+      {"near_wall_clearance", &O::near_wall_clearance, 0.0, 100.0},
   };
   return fields;
 }
@@ -97,7 +101,8 @@ core::Pose2 SamplePose(const core::World& w, const SampleId& id, const DatagenOp
     const core::Vec2 p{rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
     if (!core::IsFree(w, p, true)) continue;
     const double clearance = core::SignedDistance(w, p, true);
-    if (clearance >= o.min_clearance && clearance <= max_clearance) return {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
+    if (clearance >= o.min_clearance && clearance <= max_clearance)
+      return {p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};
   }
   throw core::DataError("<datagen>", std::string(core::ToString(id.kind)) + " seed " + std::to_string(id.world_seed) +
                                          ": no free pose with clearance " + std::to_string(o.min_clearance) +

@@ -84,7 +84,8 @@ void CheckPlaces(const World& w, const std::string& source) {
   CheckPoint(w.start.position(), "start", source);
   if (!std::isfinite(w.start.yaw)) throw DataError(source, "start.yaw: not a finite number");
   CheckPoint(w.goal, "goal", source);
-  if (!w.bounds.Contains(w.start.position())) throw DataError(source, "start " + Where(w.start.position()) + " is outside the bounds");
+  if (!w.bounds.Contains(w.start.position()))
+    throw DataError(source, "start " + Where(w.start.position()) + " is outside the bounds");
   if (!w.bounds.Contains(w.goal)) throw DataError(source, "goal " + Where(w.goal) + " is outside the bounds");
   if (!core::IsFree(w, w.start.position(), true))
     throw DataError(source, "start " + Where(w.start.position()) + " is not in free space");
@@ -97,10 +98,13 @@ void CheckPlaces(const World& w, const std::string& source) {
       throw DataError(source, where + ".size: must be in [" + std::to_string(kMinVertexSpacing) + ", " +
                                   std::to_string(kMaxClutterSize) + "]");
     if (!std::isfinite(c.yaw) || !(c.height > 0 && c.height < kMaxClutterSize))
-      throw DataError(source, where + ": yaw must be finite and height in (0, " + std::to_string(kMaxClutterSize) + ")");
-    if (!core::IsFree(w, c.center, false)) throw DataError(source, where + ".center " + Where(c.center) + " is not in free space");
+      throw DataError(source,
+                      where + ": yaw must be finite and height in (0, " + std::to_string(kMaxClutterSize) + ")");
+    if (!core::IsFree(w, c.center, false))
+      throw DataError(source, where + ".center " + Where(c.center) + " is not in free space");
   }
-  for (size_t i = 0; i < w.guide_path.size(); ++i) CheckPoint(w.guide_path[i], "guide_path[" + std::to_string(i) + "]", source);
+  for (size_t i = 0; i < w.guide_path.size(); ++i)
+    CheckPoint(w.guide_path[i], "guide_path[" + std::to_string(i) + "]", source);
   if (!std::isfinite(w.guide_path_width) || w.guide_path_width < 0 || w.guide_path_width > kMaxClutterSize)
     throw DataError(source, "guide_path_width: must be in [0, " + std::to_string(kMaxClutterSize) + "]");
 }

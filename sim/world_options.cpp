@@ -75,11 +75,14 @@ void WorldOptions::Validate() const {
   core::CheckRanges(office_park, OfficeParkOptions::Fields(), "office_park.");
   core::CheckRanges(guided_maze, GuidedMazeOptions::Fields(), "guided_maze.");
   const auto& l = labyrinth;
-  Require(l.room_min_cells <= l.room_max_cells, "labyrinth.room_min_cells", l.room_min_cells, "must be <= room_max_cells");
-  Require(l.grid_cells >= 2 * l.room_max_cells + 3, "labyrinth.grid_cells", l.grid_cells, "must be >= 2*room_max_cells+3");
+  Require(l.room_min_cells <= l.room_max_cells, "labyrinth.room_min_cells", l.room_min_cells,
+          "must be <= room_max_cells");
+  Require(l.grid_cells >= 2 * l.room_max_cells + 3, "labyrinth.grid_cells", l.grid_cells,
+          "must be >= 2*room_max_cells+3");
   Require(l.max_straight_run_cells >= l.room_max_cells, "labyrinth.max_straight_run_cells", l.max_straight_run_cells,
           "must be >= room_max_cells");
-  Require(l.start_clearance < l.hall_width / 2, "labyrinth.start_clearance", l.start_clearance, "must be < hall_width/2");
+  Require(l.start_clearance < l.hall_width / 2, "labyrinth.start_clearance", l.start_clearance,
+          "must be < hall_width/2");
   const auto& p = office_park;
   Require(p.min_building_gap < p.max_building_gap, "office_park.min_building_gap", p.min_building_gap,
           "must be < max_building_gap");

@@ -183,7 +183,8 @@ void AddWallClutter(World& w, const LabyrinthOptions& o, Rng& rng) {
     const double wall_gap = core::SignedDistance(w, p, false) - r;
     if (wall_gap < 0.1 || wall_gap > o.clutter_max_wall_gap) continue;
     bool apart = true;  // keep objects from touching each other
-    for (const auto& other : w.clutter) apart = apart && core::Distance(other.center, p) > r + other.BoundingRadius() + 0.5;
+    for (const auto& other : w.clutter)
+      apart = apart && core::Distance(other.center, p) > r + other.BoundingRadius() + 0.5;
     if (!apart) continue;
     c.center = p;
     w.clutter.push_back(c);
@@ -338,7 +339,8 @@ World GenerateOfficePark(const OfficeParkOptions& o, uint64_t seed) {
   double best = -1;
   for (int i = 0, tries = 0; i < 50 && tries < 200000; ++tries) {
     const double m = o.start_min_gap;
-    const Vec2 p{rng.Uniform(w.bounds.min.x + m, w.bounds.max.x - m), rng.Uniform(w.bounds.min.y + m, w.bounds.max.y - m)};
+    const Vec2 p{rng.Uniform(w.bounds.min.x + m, w.bounds.max.x - m),
+                 rng.Uniform(w.bounds.min.y + m, w.bounds.max.y - m)};
     if (!core::IsFree(w, p) || core::SignedDistance(w, p) < m) continue;
     ++i;
     if (core::Distance(p, w.start.position()) > best) {

@@ -44,7 +44,8 @@ void EnsureDir(const std::string& dir) {
 
 void AddWorldSourceOptions(CLI::App* cmd, WorldSource* src, const std::string& config_help) {
   cmd->add_option("--world", src->world_file, "World file (world.json)");
-  cmd->add_option("--kind,--world-kind", src->kind, "Or generate a world of this kind (labyrinth, office_park, guided_maze) ...");
+  cmd->add_option("--kind,--world-kind", src->kind,
+                  "Or generate a world of this kind (labyrinth, office_park, guided_maze) ...");
   cmd->add_option("--seed", src->seed, "... from this seed")->capture_default_str();
   cmd->add_option("--config", src->config, config_help);
   cmd->add_option("--pose", src->pose, "Agent pose x,y,yaw (world units, radians); default: the world's start");

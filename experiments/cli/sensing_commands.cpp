@@ -52,9 +52,15 @@ nlohmann::json DetectionsJson(const core::Observation& ob) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& d : ob.detections) {
     const core::Vec2 p = core::DetectionPosition(ob.pose, d);
-    out.push_back({{"x", p.x}, {"y", p.y}, {"range", d.range}, {"bearing", d.bearing},
-                   {"labels", {{"right_gap", d.labels[0]}, {"corner", d.labels[1]}, {"left_gap", d.labels[2]}, {"point", d.labels[3]}}},
-                   {"sigma_range", std::sqrt(d.polar.xx)}, {"sigma_bearing", std::sqrt(d.polar.yy)}});
+    out.push_back(
+        {{"x", p.x},
+         {"y", p.y},
+         {"range", d.range},
+         {"bearing", d.bearing},
+         {"labels",
+          {{"right_gap", d.labels[0]}, {"corner", d.labels[1]}, {"left_gap", d.labels[2]}, {"point", d.labels[3]}}},
+         {"sigma_range", std::sqrt(d.polar.xx)},
+         {"sigma_bearing", std::sqrt(d.polar.yy)}});
   }
   return out;
 }
@@ -106,7 +112,8 @@ std::vector<core::Vec2> PathToGoal(const core::World& w, const experiments::Conf
 
 // A recording along the path to the goal: --poses panoramas, or one every --spacing units (default: the
 // motion step).
-int RenderSequence(const RenderArgs& a, const core::World& w, const experiments::Config& cfg, const sim::Renderer& renderer) {
+int RenderSequence(const RenderArgs& a, const core::World& w, const experiments::Config& cfg,
+                   const sim::Renderer& renderer) {
   const auto path = PathToGoal(w, cfg);
   const double spacing = a.spacing > 0 ? a.spacing : cfg.motion.step_length;
   const int count = a.poses > 0 ? a.poses : 1 + int(std::ceil(core::PolylineLength(path) / spacing));
@@ -117,7 +124,8 @@ int RenderSequence(const RenderArgs& a, const core::World& w, const experiments:
   const double ms = MsSince(t0);
   EnsureDir(a.sequence);
   experiments::WriteRecording(a.sequence, poses, panos);
-  fmt::print("wrote {} panoramas ({:.1f} ms each) and {}/poses.csv\n", panos.size(), ms / double(panos.size()), a.sequence);
+  fmt::print("wrote {} panoramas ({:.1f} ms each) and {}/poses.csv\n", panos.size(), ms / double(panos.size()),
+             a.sequence);
   return 0;
 }
 
@@ -142,7 +150,8 @@ int RunRender(const RenderArgs& a) {
     return 0;
   }
   const core::Pose2 pose = StartAtPose(w, a.pose).start;
-  const int outputs = sim::kRenderRgb | (a.depth.empty() ? 0 : sim::kRenderDepth) | (a.ids.empty() ? 0 : sim::kRenderIds);
+  const int outputs =
+      sim::kRenderRgb | (a.depth.empty() ? 0 : sim::kRenderDepth) | (a.ids.empty() ? 0 : sim::kRenderIds);
   const auto t0 = Clock::now();
   const sim::Panorama pano = renderer.Render(pose, outputs);
   const double ms = MsSince(t0);
@@ -154,7 +163,8 @@ int RunRender(const RenderArgs& a) {
     out << "# obstacle id per pixel, " << pano.height << " rows x " << pano.width
         << " columns; -1 none, ring*65536+edge for walls, 1073741824+i for clutter item i\n";
     for (int r = 0; r < pano.height; ++r)
-      for (int c = 0; c < pano.width; ++c) out << pano.ids[size_t(r) * pano.width + c] << (c + 1 < pano.width ? ' ' : '\n');
+      for (int c = 0; c < pano.width; ++c)
+        out << pano.ids[size_t(r) * pano.width + c] << (c + 1 < pano.width ? ' ' : '\n');
   }
   fmt::print("wrote {} ({}x{}, {} triangles, rendered in {:.1f} ms)\n", a.out, pano.width, pano.height,
              renderer.num_triangles(), ms);
@@ -219,10 +229,12 @@ int RunRecordedMap(const MapArgs& a) {
   j["wall_time_ms"] = ms;
   j["map"] = experiments::MapGeometryJson(r.view);
   WriteTextFile((fs::path(a.out) / "map.json").string(), j.dump(1) + "\n");
-  fmt::print("{} frames: vertices {}  walls {}  frontiers {}{}  detect {:.1f} ms/frame  map {:.1f} ms/frame  total {:.1f} s -> {}/map.png, map.json\n",
-             r.frames, r.view.vertices.size(), r.view.walls.size(), r.view.frontiers.size(),
-             has_world ? fmt::format("  IoU {:.4f}", j["known_space_iou"].get<double>()) : "", r.mean_observe_ms,
-             r.mean_update_ms, ms / 1000, a.out);
+  fmt::print(
+      "{} frames: vertices {}  walls {}  frontiers {}{}  detect {:.1f} ms/frame  map {:.1f} ms/frame  total {:.1f} s "
+      "-> {}/map.png, map.json\n",
+      r.frames, r.view.vertices.size(), r.view.walls.size(), r.view.frontiers.size(),
+      has_world ? fmt::format("  IoU {:.4f}", j["known_space_iou"].get<double>()) : "", r.mean_observe_ms,
+      r.mean_update_ms, ms / 1000, a.out);
   return 0;
 }
 
@@ -257,7 +269,8 @@ int RunMap(MapArgs a) {
   EnsureDir(a.out);
   const std::vector<uint64_t> seeds =
       a.seeds.empty() ? std::vector<uint64_t>{experiments::ParseSeed(a.seed)} : experiments::ParseSeeds(a.seeds);
-  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0, across_sum = 0, cut_sum = 0;
+  double iou_sum = 0, false_sum = 0, vert_sum = 0, wall_false = 0, wall_sum = 0, error_sum = 0, across_sum = 0,
+         cut_sum = 0;
   double building_sum = 0;  // over the open worlds
   int open_worlds = 0;
   for (uint64_t seed : seeds) {
@@ -272,11 +285,13 @@ int RunMap(MapArgs a) {
     const std::string stem = seeds.size() == 1 ? "map" : fmt::format("map_s{}", seed);
     experiments::DrawMapPicture(w, r.view, {r.agent_path}, cfg.picture, (fs::path(a.out) / (stem + ".png")).string());
     WriteTextFile((fs::path(a.out) / (stem + ".json")).string(), MapDriveJson(seed, r, ms).dump(1) + "\n");
-    fmt::print("seed {:>6}: {:>4} steps  IoU {:.4f}{}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
-               "walls {:>3} ({} false, {} into free space, {} across a corridor)  update {:.2f} ms  mcmc {:.1f} ms  total {:.1f} s\n",
-               seed, r.steps, r.known_space_iou, r.building_iou ? fmt::format(" (buildings {:.4f})", *r.building_iou) : "",
-               r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error,
-               r.map_walls, r.false_walls, r.walls_across_free_space, r.walls_across_corridor, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
+    fmt::print(
+        "seed {:>6}: {:>4} steps  IoU {:.4f}{}  vertices {:>3} ({} false, {} rejected, error {:.2f})  "
+        "walls {:>3} ({} false, {} into free space, {} across a corridor)  update {:.2f} ms  mcmc {:.1f} ms  total "
+        "{:.1f} s\n",
+        seed, r.steps, r.known_space_iou, r.building_iou ? fmt::format(" (buildings {:.4f})", *r.building_iou) : "",
+        r.map_vertices, r.false_vertices, r.view.rejected.size(), r.mean_vertex_error, r.map_walls, r.false_walls,
+        r.walls_across_free_space, r.walls_across_corridor, r.mean_update_ms, r.mean_mcmc_ms, ms / 1000);
     iou_sum += r.known_space_iou;
     if (r.building_iou) building_sum += *r.building_iou, ++open_worlds;
     false_sum += r.false_vertices;
@@ -288,56 +303,73 @@ int RunMap(MapArgs a) {
     wall_sum += r.map_walls;
   }
   if (seeds.size() > 1)
-    fmt::print("{} seeds: mean IoU {:.4f}{}, false vertices {:.1f} % ({} of {}), false walls {:.1f} % ({} into free space, "
-               "{} across a corridor), vertex error {:.2f}\n",
-               seeds.size(), iou_sum / double(seeds.size()),
-               open_worlds > 0 ? fmt::format(" (buildings {:.4f})", building_sum / open_worlds) : "",
-               100.0 * false_sum / std::max(1.0, vert_sum), false_sum,
-               vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum), across_sum, cut_sum,
-               error_sum / std::max(1.0, vert_sum - false_sum));
+    fmt::print(
+        "{} seeds: mean IoU {:.4f}{}, false vertices {:.1f} % ({} of {}), false walls {:.1f} % ({} into free space, "
+        "{} across a corridor), vertex error {:.2f}\n",
+        seeds.size(), iou_sum / double(seeds.size()),
+        open_worlds > 0 ? fmt::format(" (buildings {:.4f})", building_sum / open_worlds) : "",
+        100.0 * false_sum / std::max(1.0, vert_sum), false_sum, vert_sum, 100.0 * wall_false / std::max(1.0, wall_sum),
+        across_sum, cut_sum, error_sum / std::max(1.0, vert_sum - false_sum));
   return 0;
 }
 
 // ---------------------------------------------------------------- command-line options
 
 CLI::App* AddObserveCommand(CLI::App& app, ObserveArgs* a) {
-  CLI::App* observe = app.add_subcommand("observe", "Print the ground-truth observation from a pose as JSON (with --sensor: what the config sensor detects)");
+  CLI::App* observe = app.add_subcommand(
+      "observe",
+      "Print the ground-truth observation from a pose as JSON (with --sensor: what the config sensor detects)");
   AddWorldSourceOptions(observe, a, "YAML config with generator options");
   observe->add_option("--max-range", a->max_range, "Only vertices closer than this (default: unlimited)")
       ->check(CLI::PositiveNumber);
   observe->add_option("--png", a->png, "Also draw the observation to this PNG");
-  observe->add_flag("--sensor", a->sensor, "Also report the detections of the config's sensor: (JSON 'detections'; squares in the PNG)");
+  observe->add_flag("--sensor", a->sensor,
+                    "Also report the detections of the config's sensor: (JSON 'detections'; squares in the PNG)");
   observe->add_option("--model", a->model, "... of the learned sensor with this model file (implies --sensor)");
   return observe;
 }
 
 CLI::App* AddRenderCommand(CLI::App& app, RenderArgs* a) {
-  CLI::App* render = app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
+  CLI::App* render =
+      app.add_subcommand("render", "Render the robot's 360-degree panorama (PNG) at a pose, or a contact sheet");
   AddWorldSourceOptions(render, a, "YAML config (render: width, height, camera_height, ...)");
   render->add_option("--out", a->out, "Output PNG")->capture_default_str();
   render->add_option("--poses", a->poses, "Instead: a contact sheet of this many panoramas along a path to the goal")
       ->check(CLI::Range(1, 100000));
-  render->add_option("--sequence", a->sequence, "Instead: a recording along the path to the goal: DIR/pano_NNNNN.png and DIR/poses.csv "
-                                                "(--poses of them, or one every --spacing units)");
-  render->add_option("--spacing", a->spacing, "With --sequence: world units between panoramas (default: the motion step)")
+  render->add_option("--sequence", a->sequence,
+                     "Instead: a recording along the path to the goal: DIR/pano_NNNNN.png and DIR/poses.csv "
+                     "(--poses of them, or one every --spacing units)");
+  render
+      ->add_option("--spacing", a->spacing, "With --sequence: world units between panoramas (default: the motion step)")
       ->check(CLI::PositiveNumber);
-  render->add_option("--depth", a->depth, "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
+  render->add_option("--depth", a->depth,
+                     "Also write the depth panorama as a grey PNG (bright = near, 100 units = black)");
   render->add_option("--ids", a->ids, "Also write the obstacle-id image as text (one row per line)");
   return render;
 }
 
 CLI::App* AddMapCommand(CLI::App& app, MapArgs* a) {
-  CLI::App* map = app.add_subcommand("map", "Drive an agent along a path with the config's sensor and build the probabilistic map, or build it from recorded panoramas");
+  CLI::App* map = app.add_subcommand("map",
+                                     "Drive an agent along a path with the config's sensor and build the probabilistic "
+                                     "map, or build it from recorded panoramas");
   AddWorldSourceOptions(map, a, "YAML config (sensor:, mapping:, motion:)");
   map->add_option("--seeds", a->seeds, "Several seeds A-B (files then named map_sSEED)");
-  map->add_option("--path", a->drive.path, "Path to drive: tour (whole free space), guide, goal")->capture_default_str();
-  map->add_option("--steps", a->drive.max_steps, "At most this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
-  map->add_option("--tour-spacing", a->drive.tour_spacing, "Tour: visit the free points of a grid this fine (world units; default 20, 11 in a guided maze)")->check(CLI::Range(1.0, 1000.0));
-  map->add_option("--mcmc-every", a->drive.mcmc_every, "MCMC every this many steps")->capture_default_str()->check(CLI::Range(1, 1000000));
+  map->add_option("--path", a->drive.path, "Path to drive: tour (whole free space), guide, goal")
+      ->capture_default_str();
+  map->add_option("--steps", a->drive.max_steps, "At most this many steps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  map->add_option("--tour-spacing", a->drive.tour_spacing,
+                  "Tour: visit the free points of a grid this fine (world units; default 20, 11 in a guided maze)")
+      ->check(CLI::Range(1.0, 1000.0));
+  map->add_option("--mcmc-every", a->drive.mcmc_every, "MCMC every this many steps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
   map->add_flag("--no-mcmc", a->no_mcmc, "Build the map without the posterior (every potential vertex kept)");
   map->add_option("--out", a->out, "Output directory: map.png and map.json")->capture_default_str();
-  map->add_option("--images", a->images, "Instead: build the map from a recording (panoramas + poses.csv, e.g. from render --sequence) "
-                                         "with the learned sensor; --world/--kind then only draw the true world and score the map");
+  map->add_option("--images", a->images,
+                  "Instead: build the map from a recording (panoramas + poses.csv, e.g. from render --sequence) "
+                  "with the learned sensor; --world/--kind then only draw the true world and score the map");
   map->add_option("--poses", a->poses_csv, "With --images: the poses file (default: DIR/poses.csv)");
   map->add_option("--model", a->model, "With --images: the model file (default: the config's sensor.model)");
   return map;

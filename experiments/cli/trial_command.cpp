@@ -189,7 +189,9 @@ CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
   CLI::App* trial = app.add_subcommand("trial", "Run one search trial (1 agent, or a team over distinct frontiers), "
                                                 "or with --planner one goal-directed navigation trial");
   AddWorldSourceOptions(trial, a, "YAML config (sensor:, mapping:, motion:)");
-  trial->add_option("--agents", a->trial.num_agents, "Number of agents")->capture_default_str()->check(CLI::Range(1, 16));
+  trial->add_option("--agents", a->trial.num_agents, "Number of agents")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16));
   trial->add_option("--max-steps", a->max_steps, "Step cap (default: the config's bench.max_steps)")
       ->check(CLI::Range(1, 100000));
   trial->add_option("--mcmc-every", a->mcmc_every,

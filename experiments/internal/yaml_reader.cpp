@@ -16,7 +16,8 @@ YamlSection::YamlSection(YAML::Node node, std::string file, std::string path)
   // Keys must be plain scalars, each at most once (yaml-cpp keeps duplicates and would use the first).
   std::set<std::string> seen;
   for (const auto& kv : node_) {
-    if (!kv.first.IsScalar()) throw core::ConfigError(file_, KeyPath("<key>"), Text(kv.first), "keys must be plain names");
+    if (!kv.first.IsScalar())
+      throw core::ConfigError(file_, KeyPath("<key>"), Text(kv.first), "keys must be plain names");
     if (!seen.insert(kv.first.Scalar()).second)
       throw core::ConfigError(file_, KeyPath(kv.first.Scalar()), Text(kv.second), "key given twice");
   }

@@ -39,7 +39,8 @@ class YamlSection {
   void ReadFields(Options* o, const core::OptionFields<Options>& fields) {
     for (const auto& f : fields) {
       if (const auto* d = std::get_if<double Options::*>(&f.member)) Read(f.key, &(o->*(*d)), f.lo, f.hi);
-      else if (const auto* i = std::get_if<int Options::*>(&f.member)) Read(f.key, &(o->*(*i)), IntBound(f.lo), IntBound(f.hi));
+      else if (const auto* i = std::get_if<int Options::*>(&f.member))
+        Read(f.key, &(o->*(*i)), IntBound(f.lo), IntBound(f.hi));
       else Read(f.key, &(o->*std::get<bool Options::*>(f.member)));
     }
   }

@@ -79,7 +79,9 @@ class BoundaryRules {
       for (size_t i = 0; i < m.vertices.size(); ++i)
         if (m.vertices.Seen(int(i))) structure_.push_back(m.Pos(int(i)));
   }
-  bool Frontier(const Vec2& a, const Vec2& b) const { return !OnWall(a, b) && !OnRegionEdge(a, b) && !FarFromStructure(a, b); }
+  bool Frontier(const Vec2& a, const Vec2& b) const {
+    return !OnWall(a, b) && !OnRegionEdge(a, b) && !FarFromStructure(a, b);
+  }
 
  private:
   bool OnWall(const Vec2& a, const Vec2& b) const {

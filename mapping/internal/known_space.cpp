@@ -55,7 +55,8 @@ KnownSpace::Changes KnownSpace::FindChanges(const MapCore& m, const MapState& ms
     snap_member_[i] = member;
   }
   const std::vector<Wall> mw = SightWalls(ms, closing);
-  std::set_symmetric_difference(mw.begin(), mw.end(), snap_walls_.begin(), snap_walls_.end(), std::back_inserter(c.walls));
+  std::set_symmetric_difference(mw.begin(), mw.end(), snap_walls_.begin(), snap_walls_.end(),
+                                std::back_inserter(c.walls));
   snap_walls_ = mw;
   return c;
 }
@@ -133,7 +134,8 @@ void KnownSpace::Update(const MapCore& m, const MapState& ms, double tolerance) 
     }
   }
   if (!rebuild && total_valid_) {
-    if (!grown.empty()) total_.Join(PolygonSet::JoinAll(grown));  // the small pieces first, then one join with the big union
+    // The small pieces first, then one join with the big union.
+    if (!grown.empty()) total_.Join(PolygonSet::JoinAll(grown));
     return;
   }
   RebuildUnion(m);

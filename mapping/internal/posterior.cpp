@@ -37,7 +37,8 @@ const std::vector<int>& StarMembers::Of(const MapCore& m, size_t k) {
   if (!ok_[k]) {
     const Obs& ob = m.obs[k];
     for (size_t id = 0; id < m.vertices.size(); ++id)
-      if (m.vertices.Seen(int(id)) && !Detected(ob, int(id)) && InStar(ob, m.Pos(int(id)))) members_[k].push_back(int(id));
+      if (m.vertices.Seen(int(id)) && !Detected(ob, int(id)) && InStar(ob, m.Pos(int(id))))
+        members_[k].push_back(int(id));
     ok_[k] = 1;
   }
   return members_[k];
@@ -139,7 +140,8 @@ std::vector<int> Affected(const MapCore& m, int i, const MapState& ms) {
   for (size_t k = 0; k < m.obs.size(); ++k) {
     const Obs& ob = m.obs[k];
     bool hit = Detected(ob, i) || StarMeets(ob, x, x);
-    for (size_t w = 0; w < walls.size() && !hit; ++w) hit = StarMeets(ob, m.Pos(walls[w].first), m.Pos(walls[w].second));
+    for (size_t w = 0; w < walls.size() && !hit; ++w)
+      hit = StarMeets(ob, m.Pos(walls[w].first), m.Pos(walls[w].second));
     if (hit) out.push_back(int(k));
   }
   return out;

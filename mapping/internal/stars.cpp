@@ -115,7 +115,8 @@ core::Ring HypotheticalStar(const MapCore& m, const Obs& ob, const std::vector<i
     std::vector<int> others;
     for (int j : m.walls.Neighbours(id))
       if (ms.HasWall(id, j)) others.push_back(j);
-    if (const auto it = extra.find(id); it != extra.end()) others.insert(others.end(), it->second.begin(), it->second.end());
+    if (const auto it = extra.find(id); it != extra.end())
+      others.insert(others.end(), it->second.begin(), it->second.end());
     for (int j : others) {
       const double side = core::Cross(sp.p - c, m.Pos(j) - sp.p);
       if (side >= 0) sp.open_ccw = false;
@@ -137,7 +138,8 @@ core::Ring HypotheticalStar(const MapCore& m, const Obs& ob, const std::vector<i
   core::Ring ring = OpenStarPolygon(c, pts, space, &hit);
   for (int k : hit) hit_walls->push_back(keys[size_t(k)]);
   // The polygon also depends on which sides of each vertex are open: part of what it was built from.
-  for (const auto& p : pts) hit_walls->push_back((uint64_t(0xF) << 60) | (uint64_t(p.open_ccw) << 1) | uint64_t(p.open_cw));
+  for (const auto& p : pts)
+    hit_walls->push_back((uint64_t(0xF) << 60) | (uint64_t(p.open_ccw) << 1) | uint64_t(p.open_cw));
   return ring;
 }
 

@@ -44,8 +44,10 @@ void WallEvidence::Add(const Obs& ob, size_t num_vertices) {
       w.count += 1;
       const double no_i = core::NoWallCcw(ob.det[i].labels), no_j = core::NoWallCw(ob.det[j].labels);
       // Past a detection both ends must say wall (closed worlds: open-world buildings have no doorways).
-      const bool both = !o_.open_region && (o_.wall_evidence_min || (!c.on_segment.empty() && o_.wall_past_detection_min));
-      c.value = std::pow(o_.wall_skip_damping, double(fixed)) * (both ? 1.0 - std::max(no_i, no_j) : 1.0 - 0.5 * (no_i + no_j));
+      const bool both =
+          !o_.open_region && (o_.wall_evidence_min || (!c.on_segment.empty() && o_.wall_past_detection_min));
+      c.value = std::pow(o_.wall_skip_damping, double(fixed)) *
+                (both ? 1.0 - std::max(no_i, no_j) : 1.0 - 0.5 * (no_i + no_j));
       if (c.on_segment.empty() || c.value < 1e-9) {
         w.sum += c.value;
         continue;
@@ -95,7 +97,8 @@ std::vector<Wall> WallEvidence::ChangedWalls(int i, const MapState& ms) const {
   std::vector<Wall> out;
   const bool on = !ms.mapped[size_t(i)];
   for (int j : neighbours_[size_t(i)])
-    if (ms.mapped[size_t(j)] && Prob(i, j, ms.mapped, i, on) > o_.wall_threshold) out.push_back({std::min(i, j), std::max(i, j)});
+    if (ms.mapped[size_t(j)] && Prob(i, j, ms.mapped, i, on) > o_.wall_threshold)
+      out.push_back({std::min(i, j), std::max(i, j)});
   if (size_t(i) < spans_.size())
     for (uint64_t key : spans_[size_t(i)]) {
       const auto [a, b] = WallEnds(key);

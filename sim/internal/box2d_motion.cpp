@@ -51,7 +51,8 @@ const core::OptionFields<MotionOptions>& MotionOptions::Fields() {
 void MotionOptions::Validate() const {
   core::CheckRanges(*this, Fields(), "motion.");
   if (avoid_window / avoid_cell > 400)
-    throw core::ConfigError("<options>", "motion.avoid_cell", std::to_string(avoid_cell), "gives more than 400 cells across avoid_window");
+    throw core::ConfigError("<options>", "motion.avoid_cell", std::to_string(avoid_cell),
+                            "gives more than 400 cells across avoid_window");
 }
 
 struct MotionSim::Impl {
@@ -99,7 +100,8 @@ struct MotionSim::Impl {
 
   // Where to head next along 'path' (pos, then the waypoints) without brushing an obstacle: 'target' (the
   // point one step along the path) if the straight line there keeps the clearance; else the point one step
-  // along the shortest route on a local grid to the path point that best trades detour for progress.  An agent already closer than the clearance may move along or away, never closer.
+  // along the shortest route on a local grid to the path point that best trades detour for progress.  An agent already
+  // closer than the clearance may move along or away, never closer.
   Vec2 AvoidingTarget(const std::vector<Vec2>& path, const Vec2& target, double step, bool* turned) const {
     *turned = false;
     const Vec2 pos = path.front();
@@ -291,7 +293,8 @@ StepResult MotionSim::Step(int agent, const std::vector<Vec2>& waypoints) {
   const Vec2 aim = m.AvoidingTarget(path, target, m.options.step_length, &turned);
   StepResult r = m.MoveToward(agent, aim);
   r.avoided = turned;
-  r.reached_end = reaches_end && core::Distance(r.pose.position(), waypoints.back()) < 0.05 * m.options.step_length + 1e-9;
+  r.reached_end =
+      reaches_end && core::Distance(r.pose.position(), waypoints.back()) < 0.05 * m.options.step_length + 1e-9;
   return r;
 }
 

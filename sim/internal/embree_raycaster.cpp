@@ -225,7 +225,8 @@ RayCaster::RayCaster(const core::World& world) : impl_(std::make_unique<Impl>())
   attach(far, kMaskFar, 2);
   rtcCommitScene(m.scene);
   if (rtcGetDeviceError(dev) != RTC_ERROR_NONE)
-    throw core::InternalError("Embree: building the scene failed (error " + std::to_string(int(rtcGetDeviceError(dev))) + ")");
+    throw core::InternalError("Embree: building the scene failed (error " +
+                              std::to_string(int(rtcGetDeviceError(dev))) + ")");
   guard.armed = false;
 }
 

@@ -361,7 +361,8 @@ Renderer::Renderer(const core::World& world, const RenderOptions& options) : imp
         m.taps[4 * k + size_t(i)] = 4 * t[i];
         m.weights[4 * k + size_t(i)] = uint16_t(iw[i]);
       }
-      const int nx = std::clamp(int(std::lround(px)), lo_x, hi_x), ny = std::clamp(int(std::lround(py)), 0, m.face_h - 1);
+      const int nx = std::clamp(int(std::lround(px)), lo_x, hi_x),
+                ny = std::clamp(int(std::lround(py)), 0, m.face_h - 1);
       m.nearest[k] = uint32_t(ny * atlas_w + nx);
     }
 }

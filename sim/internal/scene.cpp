@@ -126,7 +126,8 @@ class SceneBuilder {
     auto point = [&](int i, int j) {
       const double phi = core::kPi * j / stacks - core::kPi / 2, th = 2 * core::kPi * i / slices;
       return std::array<double, 3>{centre.x + radius * std::cos(phi) * std::cos(th),
-                                   centre.y + radius * std::cos(phi) * std::sin(th), z + squash * radius * std::sin(phi)};
+                                   centre.y + radius * std::cos(phi) * std::sin(th),
+                                   z + squash * radius * std::sin(phi)};
     };
     for (int j = 0; j < stacks; ++j)
       for (int i = 0; i < slices; ++i) {
@@ -136,8 +137,10 @@ class SceneBuilder {
                                {float(cc[0]), float(cc[1]), float(cc[2])},
                                {float(d[0]), float(d[1]), float(d[2])}};
         const double phi = core::kPi * (j + 0.5) / stacks - core::kPi / 2, th = 2 * core::kPi * (i + 0.5) / slices;
-        const float n[3] = {float(std::cos(phi) * std::cos(th)), float(std::cos(phi) * std::sin(th)), float(std::sin(phi))};
-        const float uv[4][2] = {{float(i), float(j)}, {float(i + 1), float(j)}, {float(i + 1), float(j + 1)}, {float(i), float(j + 1)}};
+        const float n[3] = {float(std::cos(phi) * std::cos(th)), float(std::cos(phi) * std::sin(th)),
+                            float(std::sin(phi))};
+        const float uv[4][2] = {
+            {float(i), float(j)}, {float(i + 1), float(j)}, {float(i + 1), float(j + 1)}, {float(i), float(j + 1)}};
         Quad(p, n, c, uv, kLeaves, 0.f, id);
       }
   }

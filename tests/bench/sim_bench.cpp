@@ -55,7 +55,8 @@ void BM_MotionStep(benchmark::State& state) {
   core::Vec2 target = w.start.position();
   int k = 0;
   for (auto _ : state) {
-    if (k++ % 20 == 0) target = {rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
+    if (k++ % 20 == 0)
+      target = {rng.Uniform(w.bounds.min.x, w.bounds.max.x), rng.Uniform(w.bounds.min.y, w.bounds.max.y)};
     benchmark::DoNotOptimize(sim.Step(a, {target}));
   }
 }

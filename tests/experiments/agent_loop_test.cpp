@@ -51,8 +51,9 @@ TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndThePolicyEndsTheRu
   EXPECT_EQ(calls, 5) << "after each of the 4 moves, and once with the final map";
   ASSERT_EQ(r.paths.size(), 2u);
   EXPECT_EQ(r.paths[0].size(), 5u);
-  EXPECT_NEAR(r.paths[0].back().x - r.paths[0].front().x, 4 * config.motion.step_length, 1e-4);  // Box2D works in floats
-  EXPECT_NEAR(r.distance[1], 4 * config.motion.step_length, 1e-4);  // Box2D works in floats
+  // Box2D works in floats.
+  EXPECT_NEAR(r.paths[0].back().x - r.paths[0].front().x, 4 * config.motion.step_length, 1e-4);
+  EXPECT_NEAR(r.distance[1], 4 * config.motion.step_length, 1e-4);
   EXPECT_EQ(r.mcmc_calls, 1) << "MCMC on step 0 (the next would be step 5)";
   EXPECT_EQ(r.final_view.num_observations, 10);
   ASSERT_TRUE(r.mapper);

@@ -204,7 +204,8 @@ TEST(BatchReliability, FreshRemovesOnlyThisShardsOwnResultsFile) {
   o.fresh = true;
   o.max_new_trials = 0;
   RunBatch(cfg, o, trials);
-  EXPECT_FALSE(fs::exists(fs::path(o.out_dir) / "trials-0-of-2.jsonl") && fs::file_size(fs::path(o.out_dir) / "trials-0-of-2.jsonl") > 0);
+  EXPECT_FALSE(fs::exists(fs::path(o.out_dir) / "trials-0-of-2.jsonl") &&
+               fs::file_size(fs::path(o.out_dir) / "trials-0-of-2.jsonl") > 0);
   EXPECT_TRUE(fs::exists(fs::path(o.out_dir) / "trials-1-of-2.jsonl")) << "the other shard's trials stay";
   EXPECT_TRUE(fs::exists(fs::path(o.out_dir) / "my_notes.jsonl")) << "a file the user put there stays";
   EXPECT_EQ(ReadResults({o.out_dir}).size(), 1u) << "and is never read as results";
@@ -291,7 +292,8 @@ TEST(BatchReliability, IncompleteRecordsAreReportedSkippedAndRedone) {
   o.max_new_trials = 1;
   RunBatch(cfg, o, trials);
   std::ofstream(fs::path(o.out_dir) / "trials.jsonl", std::ios::app)
-      << R"({"id": "labyrinth/a1/s21", "kind": "labyrinth", "agents": 1, "seed": 21, "ok": true, "success": true})" << "\n";
+      << R"({"id": "labyrinth/a1/s21", "kind": "labyrinth", "agents": 1, "seed": 21, "ok": true, "success": true})"
+      << "\n";
   std::vector<std::string> skipped;
   EXPECT_EQ(ReadResults({o.out_dir}, &skipped).size(), 1u);
   ASSERT_EQ(skipped.size(), 1u);
@@ -312,7 +314,8 @@ TEST(BatchReliability, ReportsRefuseDirectoriesOfDifferentBatchesAndAcceptShards
   for (const auto* o : {&a, &b, &c}) RunBatch(cfg, *o, trials);
   EXPECT_NO_THROW(CheckOneBatch({a.out_dir, b.out_dir}));
   EXPECT_NE(ErrorOf([&] { CheckOneBatch({a.out_dir, c.out_dir}); }).find("report them separately"), std::string::npos);
-  EXPECT_NE(BatchStamp("tests/../CMakeLists.txt", trials), BatchStamp("tests/../CMakeLists.txt", ListTrials(cfg.bench, {1})))
+  EXPECT_NE(BatchStamp("tests/../CMakeLists.txt", trials),
+            BatchStamp("tests/../CMakeLists.txt", ListTrials(cfg.bench, {1})))
       << "another trial set is another batch";
 }
 

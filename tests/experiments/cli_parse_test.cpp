@@ -22,8 +22,9 @@ TEST(CliParse, SeedsAreWholeNumbersThatNeverWrap) {
   EXPECT_EQ(ParseSeed("0"), 0u);
   EXPECT_EQ(ParseSeed("10042"), 10042u);
   EXPECT_EQ(ParseSeed(std::to_string(kMaxSeed)), kMaxSeed);
-  for (const std::string& bad : std::vector<std::string>{"-1", "+1", " 1", "1 ", "12abc", "", "18446744073709551616",
-                                                        "18446744073709551615", std::to_string(kMaxSeed + 1), "1e3", "0x10"})
+  for (const std::string& bad :
+       std::vector<std::string>{"-1", "+1", " 1", "1 ", "12abc", "", "18446744073709551616", "18446744073709551615",
+                                std::to_string(kMaxSeed + 1), "1e3", "0x10"})
     EXPECT_EQ(KeyOf([&] { ParseSeed(bad); }), "--seed") << bad;
   EXPECT_EQ(ParseSeeds("5-7"), (std::vector<uint64_t>{5, 6, 7}));
   EXPECT_EQ(ParseSeeds("9"), std::vector<uint64_t>{9});

@@ -171,7 +171,8 @@ TEST(Config, RelativeFilesAreFoundFromTheConfigsFolderOrAFolderAboveIt) {
 }
 
 TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
-  const Config c = ParseConfig("search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  unreachable_steps: 9\n  tour: true\n", "x.yaml");
+  const Config c = ParseConfig(
+      "search:\n  give_up_steps: 12\n  switch_ratio: 2.0\n  unreachable_steps: 9\n  tour: true\n", "x.yaml");
   EXPECT_EQ(c.search.give_up_steps, 12);
   EXPECT_TRUE(c.search.tour);
   EXPECT_FALSE(c.search.block_when_stuck);

@@ -46,7 +46,8 @@ TEST(NavigationReport, ReductionIsTheRatioOfTotalsOverTheSeedsBothPlannersFinish
   EXPECT_NE(md.find("Short of the goal (2):"), std::string::npos) << md;
   EXPECT_NE(md.find("- guided_maze/optimistic/s3: "), std::string::npos) << md;
   EXPECT_NE(md.find("- guided_maze/lsp/s3: failed"), std::string::npos) << md;
-  const std::string png = (std::filesystem::temp_directory_path() / ("toponav_costs_" + std::to_string(::getpid()) + ".png")).string();
+  const std::string png =
+      (std::filesystem::temp_directory_path() / ("toponav_costs_" + std::to_string(::getpid()) + ".png")).string();
   WriteCostScatter(records, png);
   EXPECT_GT(std::filesystem::file_size(png), 1000u);
   std::filesystem::remove(png);
@@ -67,7 +68,8 @@ TEST(NavigationReport, DetourIsTotalCostOverTotalShortestWayOfTheTrialsThatReach
 TEST(NavigationReport, TrialKeysNameThePlannerInsteadOfTheAgentCount) {
   EXPECT_EQ((TrialId{core::WorldKind::kGuidedMaze, 1, 10000, "optimistic"}.Key()), "guided_maze/optimistic/s10000");
   EXPECT_EQ((TrialId{core::WorldKind::kLabyrinth, 3, 10000, ""}.Key()), "labyrinth/a3/s10000");
-  const Config c = ParseConfig("bench:\n  rows:\n    - {kind: guided_maze, planner: optimistic}\n  num_seeds: 2\n", "m.yaml");
+  const Config c =
+      ParseConfig("bench:\n  rows:\n    - {kind: guided_maze, planner: optimistic}\n  num_seeds: 2\n", "m.yaml");
   const auto trials = ListTrials(c.bench);
   ASSERT_EQ(trials.size(), 2u);
   EXPECT_EQ(trials[1].Key(), "guided_maze/optimistic/s10001");

@@ -138,7 +138,8 @@ TEST(Recording, TheRecordedKindNeedsItsFolderAndAModel) {
   } catch (const core::ConfigError& e) {
     EXPECT_EQ(e.key(), "sensor.images");
   }
-  const Config parsed = ParseConfig("sensor:\n  kind: recorded\n  model: m.pt\n  images: rec\n  poses: rec/p.csv\n", "x.yaml");
+  const Config parsed =
+      ParseConfig("sensor:\n  kind: recorded\n  model: m.pt\n  images: rec\n  poses: rec/p.csv\n", "x.yaml");
   EXPECT_EQ(parsed.sensor.images, "rec");
   EXPECT_EQ(parsed.sensor.poses, "rec/p.csv");
 }

@@ -61,7 +61,8 @@ TEST(SensorFactory, BadOptionsAreRejectedWhenTheSensorIsMade) {
 }
 
 TEST(SensorFactory, TheLearnedKindRunsTheModelOnTheRenderedPanorama) {
-  const std::string model = (std::filesystem::temp_directory_path() / ("toponav_sf_" + std::to_string(::getpid()) + ".pt")).string();
+  const std::string model =
+      (std::filesystem::temp_directory_path() / ("toponav_sf_" + std::to_string(::getpid()) + ".pt")).string();
   learning::VertexNetOptions tiny;
   tiny.width = 0.125;
   learning::VertexModel(tiny, 5).Save(model);

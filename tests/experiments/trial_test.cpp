@@ -52,7 +52,8 @@ TEST(BuildingPlacementIoU, CountsEnclosedBuildingsOnly) {
   const core::Ring first{{0, 10}, {10, 10}, {10, 0}, {0, 0}};  // clockwise: a hole
   const core::Ring second{{40, 10}, {50, 10}, {50, 0}, {40, 0}};
   // Both buildings enclosed by known space, unknown ground all around the outside: a perfect score.
-  EXPECT_NEAR(BuildingPlacementIoU(w, view_of({{{{-5, -5}, {55, -5}, {55, 15}, {-5, 15}}, {first, second}}})), 1.0, 1e-9);
+  EXPECT_NEAR(BuildingPlacementIoU(w, view_of({{{{-5, -5}, {55, -5}, {55, 15}, {-5, 15}}, {first, second}}})), 1.0,
+              1e-9);
   // Only the first one walked around: half the building area found.
   EXPECT_NEAR(BuildingPlacementIoU(w, view_of({{around_first, {first}}})), 0.5, 1e-9);
   // A spurious enclosed obstacle counts against it.
@@ -88,7 +89,9 @@ TEST(TrialVideo, HasOneFramePerStepAndTheFinalMap) {
   int frames = 0;
   {
     TrialVideo video(w, cfg.picture, path);
-    o.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) { video.AddFrame(v, paths); };
+    o.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
+      video.AddFrame(v, paths);
+    };
     const TrialResult r = RunSearchTrial(w, cfg, o, 101);
     frames = video.frames();
     EXPECT_EQ(frames, r.steps + 1) << "one frame a step and the final map";

@@ -48,13 +48,14 @@ std::string FuzzWorld(uint64_t seed) {
   const double tiny = mode == 4 ? 0.01 : mode == 5 ? 1e-9 : 0.0;
   std::ostringstream os;
   os.precision(17);
-  os << "{\"boundary\": [[0,0],[" << big << ",0],[" << big << "," << big << "]," << (tiny > 0 ? "[" + Number(tiny) + "," + Number(big) + "]," : "")
-     << "[0," << big << "]],";
+  os << "{\"boundary\": [[0,0],[" << big << ",0],[" << big << "," << big << "],"
+     << (tiny > 0 ? "[" + Number(tiny) + "," + Number(big) + "]," : "") << "[0," << big << "]],";
   os << "\"obstacles\": [";
   const int n = int(rng.UniformInt(0, 4));
   for (int i = 0; i < n; ++i) {
     const double cx = rng.Uniform(20, 80), cy = rng.Uniform(20, 80);
-    if (mode == 6 && i == 0) os << "[[" << cx << "," << cy << "],[" << cx + 30 << "," << cy + 1e-4 << "],[" << cx + 60 << "," << cy << "]]";  // sliver
+    if (mode == 6 && i == 0)  // a sliver
+      os << "[[" << cx << "," << cy << "],[" << cx + 30 << "," << cy + 1e-4 << "],[" << cx + 60 << "," << cy << "]]";
     else os << Polygon(rng, cx, cy, mode == 7 ? 0.001 : 2, mode == 7 ? 0.04 : 8, int(rng.UniformInt(3, 9)));
     os << (i + 1 < n ? "," : "");
   }
@@ -63,7 +64,9 @@ std::string FuzzWorld(uint64_t seed) {
   os << "\"start\": {\"x\": " << sx << ", \"y\": " << sy << (mode == 9 ? ", \"z\": 1" : "") << "},";
   os << "\"goal\": [" << (mode == 10 ? 1e7 : rng.Uniform(1, 99)) << "," << rng.Uniform(1, 99) << "]";
   if (mode == 11) os << ", \"bounds\": {\"min\": [-1e9,-1e9], \"max\": [1e9,1e9]}";
-  if (mode == 0) os << ", \"clutter\": [{\"shape\": \"box\", \"center\": [" << rng.Uniform(-20, 120) << ",50], \"size\": " << rng.Uniform(-1, 3) << "}]";
+  if (mode == 0)
+    os << ", \"clutter\": [{\"shape\": \"box\", \"center\": [" << rng.Uniform(-20, 120)
+       << ",50], \"size\": " << rng.Uniform(-1, 3) << "}]";
   os << "}";
   return os.str();
 }
@@ -93,7 +96,8 @@ TEST(WorldFuzz, EveryWorldTheLoaderAcceptsSurvivesObservationAMapDriveAndSearchS
       RunMapDrive(w, config, drive);
     } catch (const core::DataError& e) {
       const std::string what = e.what();  // refusals a user can act on
-      EXPECT_TRUE(what.find("does not fit") != std::string::npos || what.find("no drivable path") != std::string::npos) << what;
+      EXPECT_TRUE(what.find("does not fit") != std::string::npos || what.find("no drivable path") != std::string::npos)
+          << what;
     } catch (const std::exception& e) {
       ADD_FAILURE() << "an accepted world made the map drive fail: " << e.what();
     }
@@ -124,20 +128,37 @@ TEST(WorldFuzz, TheLoaderNamesWhatIsWrong) {
     return std::string("accepted");
   };
   const std::string room = R"("boundary": [[0,0],[100,0],[100,100],[0,100]])";
-  EXPECT_NE(error_of("{" + room + R"(, "obstacles": [[[10,10],[20,10],[20.01,10],[20,20]]], "start": {"x":5,"y":5}, "goal": [90,90]})")
-                .find("obstacles[0][1]: closer than"), std::string::npos);
-  EXPECT_NE(error_of("{" + room + R"(, "obstacles": [[[10,10],[60,10.0001],[110,10]]], "start": {"x":5,"y":5}, "goal": [90,90]})")
-                .find("sliver"), std::string::npos);
-  EXPECT_NE(error_of(R"({"boundary": [[0,0],[1e20,0],[1e20,1e20]], "obstacles": [], "start": {"x":5,"y":1}, "goal": [9,1]})")
-                .find("farther than"), std::string::npos);
+  EXPECT_NE(
+      error_of("{" + room +
+               R"(, "obstacles": [[[10,10],[20,10],[20.01,10],[20,20]]], "start": {"x":5,"y":5}, "goal": [90,90]})")
+          .find("obstacles[0][1]: closer than"),
+      std::string::npos);
+  EXPECT_NE(error_of("{" + room +
+                     R"(, "obstacles": [[[10,10],[60,10.0001],[110,10]]], "start": {"x":5,"y":5}, "goal": [90,90]})")
+                .find("sliver"),
+            std::string::npos);
+  EXPECT_NE(
+      error_of(R"({"boundary": [[0,0],[1e20,0],[1e20,1e20]], "obstacles": [], "start": {"x":5,"y":1}, "goal": [9,1]})")
+          .find("farther than"),
+      std::string::npos);
   EXPECT_NE(error_of("{" + room + R"(, "obstacles": [], "start": {"x":5,"y":5}, "goal": [900,90]})").find("goal"),
             std::string::npos);
   EXPECT_NE(error_of("{" + room + R"(, "obstacles": [], "start": {"x":5,"y":5,"z":1}, "goal": [90,90]})")
                 .find("start.z: unknown key"), std::string::npos);
-  EXPECT_NE(error_of("{" + room + R"(, "obstacles": [], "start": {"x":5,"y":5}, "goal": [90,90], "bounds": {"min": [-1e4,-1e4], "max": [1e4,1e4]}})")
-                .find("larger than"), std::string::npos);
-  EXPECT_NE(error_of("{" + room + R"(, "obstacles": [], "clutter": [{"shape": "box", "center": [150, 50], "size": 1}], "start": {"x":5,"y":5}, "goal": [90,90]})")
-                .find("clutter[0].center"), std::string::npos);
+  EXPECT_NE(
+      error_of(
+          "{" + room +
+          R"(, "obstacles": [])"
+          R"(, "start": {"x":5,"y":5}, "goal": [90,90], "bounds": {"min": [-1e4,-1e4], "max": [1e4,1e4]}})")
+          .find("larger than"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(
+          "{" + room +
+          R"(, "obstacles": [], "clutter": [{"shape": "box", "center": [150, 50], "size": 1}])"
+          R"(, "start": {"x":5,"y":5}, "goal": [90,90]})")
+          .find("clutter[0].center"),
+      std::string::npos);
   EXPECT_EQ(error_of("{" + room + R"(, "obstacles": [], "start": {"x":5,"y":5}, "goal": [90,90]})"), "accepted");
 }
 

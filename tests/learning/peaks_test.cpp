@@ -63,7 +63,8 @@ TEST(Peaks, SubBinDecodingPlacesAVertexSpreadOverTwoCellsBetweenThem) {
   sub_bin.sub_bin = true;
   const auto d = DecodeDetections(p, labels, g, sub_bin);
   ASSERT_EQ(d.size(), 2u);
-  EXPECT_NEAR(DecodeDetections(p, labels, g, DecodeOptions{})[1].range, 12.5, 1e-9) << "without: the cell's centre (bearing -pi sorts first)";
+  EXPECT_NEAR(DecodeDetections(p, labels, g, DecodeOptions{})[1].range, 12.5, 1e-9)
+      << "without: the cell's centre (bearing -pi sorts first)";
   const double bin = 2 * core::kPi / g.cols;
   EXPECT_NEAR(d[0].range, 12.5 + 0.4 * g.RangeStep(), 1e-6);
   EXPECT_NEAR(d[0].bearing, core::kPi / 2, 1e-9) << "no bearing neighbours: the column's own bearing";

@@ -29,7 +29,8 @@ struct Examples {
   std::vector<core::SubgoalLabelGrid> subgoal;
   std::vector<LabelledImage> batch() const {
     std::vector<LabelledImage> b;
-    for (size_t i = 0; i < images.size(); ++i) b.push_back({&images[i], &labels[i], {40.0, 0.5 * double(i)}, &subgoal[i]});
+    for (size_t i = 0; i < images.size(); ++i)
+      b.push_back({&images[i], &labels[i], {40.0, 0.5 * double(i)}, &subgoal[i]});
     return b;
   }
 };
@@ -71,11 +72,13 @@ TEST(SubgoalModel, SaveAndLoadKeepTheExtensionAndGiveIdenticalOutputs) {
   VertexModel m(TinySubgoal(), 3);
   const Examples e = MakeExamples();
   m.TrainStep(e.batch(), 1e-3);
-  const std::string path = (fs::temp_directory_path() / ("toponav_subgoal_" + std::to_string(::getpid()) + ".pt")).string();
+  const std::string path =
+      (fs::temp_directory_path() / ("toponav_subgoal_" + std::to_string(::getpid()) + ".pt")).string();
   m.Save(path);
   const VertexModel loaded = VertexModel::Load(path);
   EXPECT_TRUE(loaded.options().subgoal);
-  EXPECT_EQ(loaded.PredictWithGoal(e.images[1], {20.0, -1.0}).second.ps, m.PredictWithGoal(e.images[1], {20.0, -1.0}).second.ps);
+  EXPECT_EQ(loaded.PredictWithGoal(e.images[1], {20.0, -1.0}).second.ps,
+            m.PredictWithGoal(e.images[1], {20.0, -1.0}).second.ps);
   fs::remove(path);
 }
 

@@ -20,7 +20,8 @@ MapView MapOfBuildingSeenFromBelow(const MapperOptions& o) {
   core::Rng rng(3);
   for (int i = 0; i < 20; ++i) {
     const core::Pose2 pose{-3.0 + 0.3 * i, -20, 0.0};
-    m.AddObservation(Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
+    m.AddObservation(
+        Obs(pose, {Det(pose, {5, 0}, core::VertexLabel::kRightGap), Det(pose, {-5, 0}, core::VertexLabel::kLeftGap)}));
   }
   m.SampleMostLikelyMap(rng);
   return m.View();
@@ -37,7 +38,8 @@ TEST(Mapper, OpenRegionMakesGroundBeyondGapsKnownButNotTheBuildingInside) {
   EXPECT_TRUE(view.known_set->Contains({0, -40}));
   EXPECT_FALSE(view.known_set->Contains({0, 5})) << "the building's inside is not";
   for (const auto& f : view.frontiers)
-    for (const auto& p : f.points) EXPECT_TRUE(std::abs(p.x) < 49.99 || std::abs(p.y) < 49.99) << "the region's edge is no frontier";
+    for (const auto& p : f.points)
+      EXPECT_TRUE(std::abs(p.x) < 49.99 || std::abs(p.y) < 49.99) << "the region's edge is no frontier";
   // Without the open region only the fans between the two corners are known.
   MapperOptions closed = o;
   closed.open_region.reset();

@@ -172,7 +172,8 @@ MapView DoorwayWithWrongLabels(bool evidence_min, bool open_world) {
   if (open_world) o.open_region = core::Aabb2{{-20, -20}, {30, 30}};
   return DriveThroughSquare(o, 6, [](int, const core::Pose2& pose) {
     std::vector<Detection> d = SquareCorners(pose);
-    Detection near_jamb = Det(pose, {4, 0}, core::VertexLabel::kLeftGap), far_jamb = Det(pose, {6, 0}, core::VertexLabel::kRightGap);
+    Detection near_jamb = Det(pose, {4, 0}, core::VertexLabel::kLeftGap),
+              far_jamb = Det(pose, {6, 0}, core::VertexLabel::kRightGap);
     near_jamb.labels = {0.0, 0.8, 0.2, 0.0};
     far_jamb.labels = {0.55, 0.45, 0.0, 0.0};
     d.push_back(near_jamb);
@@ -182,7 +183,8 @@ MapView DoorwayWithWrongLabels(bool evidence_min, bool open_world) {
 }
 
 TEST(Mapper, WithWallEvidenceMinOneEndSayingGapKeepsADoorwayOpenInClosedWorlds) {
-  EXPECT_TRUE(HasWall(DoorwayWithWrongLabels(false, false), {4, 0}, {6, 0})) << "averaged: 1 - (0.2 + 0.55) / 2 = 0.625";
+  EXPECT_TRUE(HasWall(DoorwayWithWrongLabels(false, false), {4, 0}, {6, 0}))
+      << "averaged: 1 - (0.2 + 0.55) / 2 = 0.625";
   const MapView view = DoorwayWithWrongLabels(true, false);
   EXPECT_FALSE(HasWall(view, {4, 0}, {6, 0})) << "the smaller end: 0.45";
   EXPECT_TRUE(HasWall(view, {0, 0}, {4, 0}));
@@ -198,7 +200,8 @@ int DuplicateDetections(double count_bias) {
   core::Rng rng(8);
   for (int i = 0; i < 40; ++i) {
     const core::Pose2 pose{5, 5, 0.0};
-    std::vector<Detection> d{Det(pose, {10 + rng.Normal(0, 0.6), 10 + rng.Normal(0, 0.6)}, core::VertexLabel::kCorner, 1.0, 0.1)};
+    std::vector<Detection> d{
+        Det(pose, {10 + rng.Normal(0, 0.6), 10 + rng.Normal(0, 0.6)}, core::VertexLabel::kCorner, 1.0, 0.1)};
     if (i == 0) d.push_back(Det(pose, {10.0, 8.8}, core::VertexLabel::kPoint, 1.0, 0.1));
     m.AddObservation(Obs(pose, d));
   }
@@ -271,8 +274,9 @@ TEST(Mapper, FrontierIsSplitWhereItTurnsSharply) {
     core::Rng rng(5);
     for (int i = 0; i < 6; ++i) {
       const core::Pose2 pose{0.0, 0.0, 0.0};
-      m.AddObservation(Obs(pose, {Det(pose, {10, 0}, core::VertexLabel::kPoint), Det(pose, {0, 10}, core::VertexLabel::kPoint),
-                                  Det(pose, {-10, 0}, core::VertexLabel::kPoint)}));
+      m.AddObservation(
+          Obs(pose, {Det(pose, {10, 0}, core::VertexLabel::kPoint), Det(pose, {0, 10}, core::VertexLabel::kPoint),
+                     Det(pose, {-10, 0}, core::VertexLabel::kPoint)}));
     }
     m.SampleMostLikelyMap(rng);
     return m.View().frontiers;
@@ -313,7 +317,8 @@ MapView CorridorEndWithACandidateOnAWall(bool candidates, std::vector<MapVertex>
   core::Rng rng(7);
   for (int i = 0; i < 30; ++i) {
     const core::Pose2 pose{10 + 0.2 * i, 10, 0.0};
-    std::vector<Detection> d{Det(pose, {0, 0}, core::VertexLabel::kCorner), Det(pose, {0, 20}, core::VertexLabel::kCorner)};
+    std::vector<Detection> d{Det(pose, {0, 0}, core::VertexLabel::kCorner),
+                             Det(pose, {0, 20}, core::VertexLabel::kCorner)};
     if (i % 3 == 0) d.push_back(Det(pose, {60, 20}, core::VertexLabel::kPoint));
     m.AddObservation(Obs(pose, d));
     if (i % 5 == 4) m.SampleMostLikelyMap(rng);
@@ -329,7 +334,8 @@ TEST(Mapper, KnownSpaceReachesAWallCandidateThePosteriorLeavesOut) {
   const MapView with = CorridorEndWithACandidateOnAWall(true, &potential);
   ASSERT_EQ(with.vertices.size(), 2u) << "only the corridor end's corners are mapped";
   bool candidate = false;
-  for (const auto& v : potential) candidate = candidate || (core::Distance(v.position, {60, 20}) < 1.0 && v.num_detections >= 3);
+  for (const auto& v : potential)
+    candidate = candidate || (core::Distance(v.position, {60, 20}) < 1.0 && v.num_detections >= 3);
   ASSERT_TRUE(candidate) << "the spot on the wall has enough detections to be a candidate";
   const Vec2 in_front{50, 17};  // seen free: between the agent and the candidate on the wall
   auto known = [](const MapView& v, Vec2 p) { return v.known_set && v.known_set->Contains(p); };
@@ -353,7 +359,8 @@ double RoomWithALateVertexKnownArea(bool every_step) {
   for (int i = 0; i < 30; ++i) {
     const core::Pose2 pose{5, 5 + 0.02 * i, 0.0};
     std::vector<Detection> d;  // labels without walls: only the vertices matter here
-    for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) d.push_back(Det(pose, c, core::VertexLabel::kPoint));
+    for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}})
+      d.push_back(Det(pose, c, core::VertexLabel::kPoint));
     if (i >= 5) d.push_back(Det(pose, {9, 5}, core::VertexLabel::kPoint));
     m.AddObservation(Obs(pose, d));
     if (i % 5 == 4) m.SampleMostLikelyMap(rng);

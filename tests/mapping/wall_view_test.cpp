@@ -41,7 +41,9 @@ std::unique_ptr<Mapper> EdgeOnPairMapper(double min_view_angle, core::VertexLabe
   return m;
 }
 
-MapView EdgeOnPair(double min_view_angle) { return EdgeOnPairMapper(min_view_angle, core::VertexLabel::kCorner)->View(); }
+MapView EdgeOnPair(double min_view_angle) {
+  return EdgeOnPairMapper(min_view_angle, core::VertexLabel::kCorner)->View();
+}
 
 TEST(WallEvidence, PairsSeenEdgeOnGiveNoEvidenceAboveTheMinimumViewAngle) {
   const MapView reference = EdgeOnPair(0.0);
@@ -69,7 +71,8 @@ TEST(Mapper, LogPosteriorIfScoresOtherInclusionsWithoutChangingTheMap) {
     const core::Pose2 pose{5, 5, 0.1 * i};
     core::Observation z;
     z.pose = pose;
-    for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) z.detections.push_back(Det(pose, c, core::VertexLabel::kCorner));
+    for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}})
+      z.detections.push_back(Det(pose, c, core::VertexLabel::kCorner));
     std::sort(z.detections.begin(), z.detections.end(), [](auto& a, auto& b) { return a.bearing < b.bearing; });
     m.AddObservation(z);
   }

@@ -16,7 +16,8 @@ inline mapping::MapView DeadEndSeenFromStart() {
   v.known_space.push_back({{a, b, c, d, e, f}, {}});
   const std::vector<Vec2> corners{a, b, c, d, e, f};
   for (size_t i = 0; i < corners.size(); ++i) v.vertices.push_back({int(i), corners[i], {}, 5});
-  for (auto [i, j] : {std::pair{0, 1}, {2, 3}, {3, 4}, {5, 0}}) v.walls.push_back({i, j, corners[size_t(i)], corners[size_t(j)], 0.9});
+  for (auto [i, j] : {std::pair{0, 1}, {2, 3}, {3, 4}, {5, 0}})
+    v.walls.push_back({i, j, corners[size_t(i)], corners[size_t(j)], 0.9});
   v.frontiers.push_back({1, {b, c}, (b + c) * 0.5, 14.0});
   v.frontiers.push_back({2, {e, f}, (e + f) * 0.5, 14.0});
   return v;

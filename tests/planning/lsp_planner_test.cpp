@@ -34,7 +34,8 @@ struct Scene {
   std::vector<FrontierTarget> targets = FrontierTargets(view, options);
 };
 
-std::vector<FrontierChoice> PlanWith(Scene& s, std::unique_ptr<SubgoalEstimator> e, const Planner** planner_out = nullptr) {
+std::vector<FrontierChoice> PlanWith(Scene& s, std::unique_ptr<SubgoalEstimator> e,
+                                     const Planner** planner_out = nullptr) {
   static std::unique_ptr<Planner> planner;
   planner = CreateLspPlanner(std::move(e), {}, s.options, s.world.bounds, "test");
   const VisibilityGraph graph(s.view, s.options, false);
@@ -67,7 +68,8 @@ TEST(LspPlanner, TheOracleHeadsUpTheStemNotIntoTheDeadEndTheOptimisticPlannerTak
 TEST(LspPlanner, EstimatesOutsideTheirRangesAreClampedBeforeOrdering) {
   Scene s;
   const Planner* planner = nullptr;
-  PlanWith(s, std::make_unique<FixedEstimator>(std::vector<SubgoalProperties>{{1.8, -20, -5}, {-0.3, 10, 10}}), &planner);
+  PlanWith(s, std::make_unique<FixedEstimator>(std::vector<SubgoalProperties>{{1.8, -20, -5}, {-0.3, 10, 10}}),
+           &planner);
   const LspDecision* d = LastDecision(*planner);
   ASSERT_NE(d, nullptr);
   ASSERT_EQ(d->frontier_ids, (std::vector<int>{1, 2}));

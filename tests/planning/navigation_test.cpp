@@ -248,7 +248,8 @@ TEST(HSignature, ReverseCancelsAndALoopWindsOnce) {
   EXPECT_NEAR(h[0], 2 * core::kPi, 1e-9);
   EXPECT_NEAR(h[1], 0.0, 1e-9);
   // Left and right around the obstacle at the origin: same ends, different classes.
-  const auto left = HSignature({{-2, 0}, {0, 2}, {2, 0}}, {{0, 0}}), right = HSignature({{-2, 0}, {0, -2}, {2, 0}}, {{0, 0}});
+  const auto left = HSignature({{-2, 0}, {0, 2}, {2, 0}}, {{0, 0}}),
+             right = HSignature({{-2, 0}, {0, -2}, {2, 0}}, {{0, 0}});
   EXPECT_NEAR(std::abs(left[0] - right[0]), 2 * core::kPi, 1e-9);
 }
 

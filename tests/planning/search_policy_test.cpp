@@ -107,7 +107,8 @@ TEST(FrontierDwell, TargetsDweltAtPastHalfTheStepsArePushedThroughButNotOutOfThe
   for (int k = 0; k < 3; ++k) dwell.Count(1);
   for (int k = 0; k < 2; ++k) dwell.Count(2);
   dwell.Count(3), dwell.Count(3), dwell.Count(3);
-  std::vector<FrontierTarget> targets{Target(1, {10, 10}, {0, 1}), Target(2, {40, 10}, {0, 1}), Target(3, {50, 98}, {0, 1})};
+  std::vector<FrontierTarget> targets{Target(1, {10, 10}, {0, 1}), Target(2, {40, 10}, {0, 1}),
+                                      Target(3, {50, 98}, {0, 1})};
   dwell.PushThrough(&targets, 8.0, core::Aabb2{{0, 0}, {100, 100}});
   EXPECT_EQ(targets[0].point, (Vec2{10, 18})) << "3 steps > 4 / 2: pushed along its outward normal";
   EXPECT_EQ(targets[1].point, (Vec2{40, 10})) << "2 steps: not yet";

@@ -89,7 +89,8 @@ TEST(SubgoalOrdering, SelectionDropsUnreachableAndHopelessFrontiersThenKeepsChea
   p.properties[6].ps = 0.0;
   EXPECT_EQ(SelectFrontiers(p, 12), (std::vector<int>{0, 1, 3, 4, 7}));
   // At most 3: the 2 cheapest (optimistic cost), then the likeliest.
-  for (int f : {0, 1, 3, 4, 7}) p.robot_cost[size_t(f)] = 0.0, p.goal_cost[size_t(f)] = 10.0 * f, p.properties[size_t(f)].delta_success = 0;
+  for (int f : {0, 1, 3, 4, 7})
+    p.robot_cost[size_t(f)] = 0.0, p.goal_cost[size_t(f)] = 10.0 * f, p.properties[size_t(f)].delta_success = 0;
   p.properties[7].ps = 0.9;
   EXPECT_EQ(SelectFrontiers(p, 3), (std::vector<int>{0, 1, 7}));
   const OrderingProblem r = Restrict(p, {0, 7});

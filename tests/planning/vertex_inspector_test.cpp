@@ -103,7 +103,8 @@ TEST(VertexInspector, TheCornersOfAHollowBuildingAreLookedAtFromOutside) {
     EXPECT_GT(core::Distance(targets[i].point, {50, 50}), core::Distance(corners[i], {50, 50}))
         << "lookout " << i << " is outside the building";
   }
-  EXPECT_NEAR(targets[0].point.x, 40.0, 1e-9) << "of (40, 40)'s lookouts (south, south-west, west) the southern one is nearest the agent";
+  EXPECT_NEAR(targets[0].point.x, 40.0, 1e-9)
+      << "of (40, 40)'s lookouts (south, south-west, west) the southern one is nearest the agent";
   EXPECT_NEAR(targets[0].point.y, 26.0, 1e-9);
 }
 

@@ -27,7 +27,8 @@ Errors MeasureErrors(const NoisySensorOptions& o, uint64_t seed) {
   Errors e;
   double sr = 0, sb = 0, sf = 0;
   for (int poses = 0; poses < 40;) {
-    const core::Vec2 p{rng.Uniform(world.bounds.min.x, world.bounds.max.x), rng.Uniform(world.bounds.min.y, world.bounds.max.y)};
+    const core::Vec2 p{rng.Uniform(world.bounds.min.x, world.bounds.max.x),
+                       rng.Uniform(world.bounds.min.y, world.bounds.max.y)};
     if (core::SignedDistance(world, p) < 2.0) continue;
     ++poses;
     const core::Pose2 pose{p.x, p.y, rng.Uniform(-core::kPi, core::kPi)};

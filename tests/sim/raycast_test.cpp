@@ -107,7 +107,8 @@ TEST(RayCaster, VisibilityPolygonBehindPillarIsExact) {
   const double shadow = 0.5 * (2 + 6) * 6;
   EXPECT_NEAR(core::SignedArea(poly), 100.0 - shadow, 1e-9);
   bool has_exact_point = false;
-  for (const auto& p : poly) has_exact_point = has_exact_point || (std::abs(p.x - 2) < 1e-12 && std::abs(p.y - 10) < 1e-12);
+  for (const auto& p : poly)
+    has_exact_point = has_exact_point || (std::abs(p.x - 2) < 1e-12 && std::abs(p.y - 10) < 1e-12);
   EXPECT_TRUE(has_exact_point) << "shadow edge meets the far wall exactly at (2, 10)";
 }
 

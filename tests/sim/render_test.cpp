@@ -29,7 +29,8 @@ double TransitionColumn(const Panorama& p, const VisibleVertex& v, int ring_size
   const int32_t a = WallId(v.ref.ring, (v.ref.index + ring_size - 1) % ring_size), b = WallId(v.ref.ring, v.ref.index);
   double best = -1, best_diff = 1e9;
   for (int c = 0; c < p.width; ++c) {
-    const int32_t x = p.ids[size_t(kHorizonRow) * p.width + c], y = p.ids[size_t(kHorizonRow) * p.width + (c + 1) % p.width];
+    const int32_t x = p.ids[size_t(kHorizonRow) * p.width + c],
+                  y = p.ids[size_t(kHorizonRow) * p.width + (c + 1) % p.width];
     const bool xa = x == a || x == b, ya = y == a || y == b;
     if (x == y || (!xa && !ya)) continue;
     double diff = std::abs(c + 0.5 - expected);

@@ -39,7 +39,8 @@ TEST(VertexLabels, BearingWrapsAndRangeIsClampedToTheGrid) {
 
 TEST(VertexLabels, TheNearerOfTwoVerticesInOneCellWins) {
   const core::RangeBearingGrid g;
-  const auto labels = RasterizeVertexLabels({At(20.3, 0.01, core::VertexLabel::kCorner), At(19.9, 0.0, core::VertexLabel::kRightGap)}, g);
+  const auto labels = RasterizeVertexLabels(
+      {At(20.3, 0.01, core::VertexLabel::kCorner), At(19.9, 0.0, core::VertexLabel::kRightGap)}, g);
   EXPECT_EQ(labels.num_vertices(), 1);
   EXPECT_EQ(labels.cells[g.Index(g.RangeRow(20.0), 64)], 1 + int(core::VertexLabel::kRightGap));
 }

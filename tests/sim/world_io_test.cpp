@@ -60,8 +60,9 @@ TEST(WorldIo, SelfIntersectingPolygonIsNamed) {
 }
 
 TEST(WorldIo, NonNumbersAndOverflowAreRejected) {
-  EXPECT_NE(ErrorOf(R"({"obstacles": [[[0,0],[1,0],[1,NaN]]], "start": {"x":5,"y":5}, "goal":[1,1]})").find("plan.json"),
-            std::string::npos);
+  EXPECT_NE(
+      ErrorOf(R"({"obstacles": [[[0,0],[1,0],[1,NaN]]], "start": {"x":5,"y":5}, "goal":[1,1]})").find("plan.json"),
+      std::string::npos);
   const std::string e = ErrorOf(R"({"obstacles": [[[0,0],[1,0],[1,"a"]]], "start": {"x":5,"y":5}, "goal":[1,1]})");
   EXPECT_NE(e.find("obstacles[0][2][1]"), std::string::npos) << e;
   const std::string big = ErrorOf(R"({"obstacles": [[[0,0],[1,0],[1,1e999]]], "start": {"x":5,"y":5}, "goal":[1,1]})");
@@ -75,25 +76,30 @@ TEST(WorldIo, ValidateRejectsNaNCoordinatesInWorldsBuiltInCode) {
 }
 
 TEST(WorldIo, UnknownKeyIsRejected) {
-  const std::string e = ErrorOf(R"({"obstacles": [[[0,0],[1,0],[1,1]]], "start": {"x": 5, "y": 5}, "goal": [1,1], "clutterr": []})");
+  const std::string e =
+      ErrorOf(R"({"obstacles": [[[0,0],[1,0],[1,1]]], "start": {"x": 5, "y": 5}, "goal": [1,1], "clutterr": []})");
   EXPECT_NE(e.find("clutterr"), std::string::npos) << e;
   EXPECT_NE(e.find("unknown key"), std::string::npos) << e;
 }
 
 TEST(WorldIo, OverlappingOrEscapingObstaclesAreRejected) {
   const std::string overlap = ErrorOf(
-      R"({"obstacles": [[[0,0],[4,0],[4,4],[0,4]], [[2,2],[6,2],[6,6],[2,6]]], "start": {"x": -3, "y": -3}, "goal": [9,9]})");
+      R"({"obstacles": [[[0,0],[4,0],[4,4],[0,4]], [[2,2],[6,2],[6,6],[2,6]]])"
+      R"(, "start": {"x": -3, "y": -3}, "goal": [9,9]})");
   EXPECT_NE(overlap.find("overlap"), std::string::npos) << overlap;
   const std::string nested = ErrorOf(
-      R"({"obstacles": [[[0,0],[10,0],[10,10],[0,10]], [[2,2],[4,2],[4,4],[2,4]]], "start": {"x": -3, "y": -3}, "goal": [9,9]})");
+      R"({"obstacles": [[[0,0],[10,0],[10,10],[0,10]], [[2,2],[4,2],[4,4],[2,4]]])"
+      R"(, "start": {"x": -3, "y": -3}, "goal": [9,9]})");
   EXPECT_NE(nested.find("overlap"), std::string::npos) << nested;
   const std::string outside = ErrorOf(
-      R"({"boundary": [[0,0],[20,0],[20,20],[0,20]], "obstacles": [[[15,15],[25,15],[25,25],[15,25]]], "start": {"x": 5, "y": 5}, "goal": [9,9]})");
+      R"({"boundary": [[0,0],[20,0],[20,20],[0,20]], "obstacles": [[[15,15],[25,15],[25,25],[15,25]]])"
+      R"(, "start": {"x": 5, "y": 5}, "goal": [9,9]})");
   EXPECT_NE(outside.find("inside the boundary"), std::string::npos) << outside;
 }
 
 TEST(WorldIo, StartInsideAnObstacleIsRejected) {
-  const std::string e = ErrorOf(R"({"obstacles": [[[0,0],[4,0],[4,4],[0,4]]], "start": {"x": 2, "y": 2}, "goal": [9,9]})");
+  const std::string e =
+      ErrorOf(R"({"obstacles": [[[0,0],[4,0],[4,4],[0,4]]], "start": {"x": 2, "y": 2}, "goal": [9,9]})");
   EXPECT_NE(e.find("start"), std::string::npos) << e;
 }
 

@@ -36,7 +36,8 @@ inline Observation Obs(const core::Pose2& pose, std::vector<Detection> dets) {
 // The four corners of the square room [0,10]^2 seen from inside: all corners.
 inline std::vector<Detection> SquareCorners(const core::Pose2& pose) {
   std::vector<Detection> d;
-  for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}}) d.push_back(Det(pose, c, core::VertexLabel::kCorner));
+  for (Vec2 c : {Vec2{0, 0}, Vec2{10, 0}, Vec2{10, 10}, Vec2{0, 10}})
+    d.push_back(Det(pose, c, core::VertexLabel::kCorner));
   return d;
 }
 inline Observation SquareFromInside(const core::Pose2& pose) { return Obs(pose, SquareCorners(pose)); }
