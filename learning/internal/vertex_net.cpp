@@ -7,6 +7,13 @@ namespace toponav::learning::internal {
 
 namespace F = torch::nn::functional;
 
+torch::Tensor MaxPool2x2Impl::forward(const torch::Tensor& x) {
+  if (x.requires_grad()) return torch::max_pool2d(x, 2);  // training: max_pool2d's backward pass is the faster
+  const int64_t h = x.size(2) / 2 * 2, w = x.size(3) / 2 * 2;
+  const torch::Tensor rows = torch::max(x.slice(2, 0, h, 2), x.slice(2, 1, h, 2));
+  return torch::max(rows.slice(3, 0, w, 2), rows.slice(3, 1, w, 2));
+}
+
 CircularConvImpl::CircularConvImpl(int64_t in, int64_t out) {
   conv = register_module("conv", torch::nn::Conv2d(torch::nn::Conv2dOptions(in, out, 3).padding({1, 0})));
 }
@@ -38,7 +45,8 @@ struct CircularConvTransposeImpl : torch::nn::Module {
   }
   torch::Tensor forward(const torch::Tensor& x) {
     const auto padded = F::pad(x, F::PadFuncOptions({1, 1, 0, 0}).mode(torch::kCircular));
-    const auto y = F::conv_transpose2d(padded, weight, F::ConvTranspose2dFuncOptions().bias(bias).stride(2).output_padding(1));
+    const auto y =
+        F::conv_transpose2d(padded, weight, F::ConvTranspose2dFuncOptions().bias(bias).stride(2).output_padding(1));
     return y.slice(3, 2, y.size(3) - 2);
   }
   torch::Tensor weight, bias;
@@ -61,7 +69,7 @@ namespace {
 void AddEncoderBlock(torch::nn::Sequential& s, int64_t in, int64_t out) {
   AddConv(s, in, out);
   AddConv(s, out, out);
-  s->push_back(torch::nn::MaxPool2d(2));
+  s->push_back(MaxPool2x2());
 }
 
 // A convolution, then an exact 2x upsampling (transposed convolution, cropped).
