@@ -9,6 +9,7 @@ namespace F = torch::nn::functional;
 
 torch::Tensor MaxPool2x2Impl::forward(const torch::Tensor& x) {
   if (x.requires_grad()) return torch::max_pool2d(x, 2);  // training: max_pool2d's backward pass is the faster
+  TORCH_CHECK(x.dim() == 4 && x.size(2) >= 2 && x.size(3) >= 2, "MaxPool2x2: a [B, C, H >= 2, W >= 2] input");
   const int64_t h = x.size(2) / 2 * 2, w = x.size(3) / 2 * 2;
   const torch::Tensor rows = torch::max(x.slice(2, 0, h, 2), x.slice(2, 1, h, 2));
   return torch::max(rows.slice(3, 0, w, 2), rows.slice(3, 1, w, 2));
