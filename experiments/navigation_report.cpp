@@ -96,8 +96,8 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
 std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, const std::vector<TrialRecord>& records) {
   std::ostringstream os;
   os << "| environment | planner | reached goal | mean cost | total cost | reduction vs optimistic | median cost ratio "
-        "| cost / shortest | mean steps | mean IoU | failed runs | s/trial "
-        "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| cost / shortest | mean steps | mean IoU | failed runs | s/trial |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
     char reduction[64] = "-", ratio[32] = "-", detour[32] = "-";
     if (!std::isnan(r.reduction))
@@ -126,8 +126,7 @@ std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, con
 std::string NavigationCsv(const std::vector<NavigationReportRow>& rows) {
   std::ostringstream os;
   os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,median_ratio,over_shortest,"
-        "mean_steps,"
-        "mean_iou,mean_wall_s\n";
+        "mean_steps,mean_iou,mean_wall_s\n";
   for (const auto& r : rows)
     os << core::ToString(r.kind) << "," << r.planner << "," << r.trials << "," << r.reached << "," << r.failed << ","
        << r.mean_cost << "," << r.total_cost << "," << r.reduction << "," << r.paired << "," << r.median_ratio << ","

@@ -14,6 +14,10 @@ namespace toponav::experiments {
 
 using core::Vec2;
 
+double SearchIoU(const core::World& world, const mapping::MapView& map) {
+  return world.has_boundary() ? KnownSpaceIoU(world, map) : BuildingPlacementIoU(world, map);
+}
+
 double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map) {
   const mapping::PolygonSet found = KnownSet(map).Holes();
   std::vector<mapping::PolygonSet> buildings;
@@ -71,7 +75,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   r.give_ups = policy.give_ups();
   r.inspections = policy.inspections();
   r.blocks = policy.blocks();
-  r.iou = open_world ? BuildingPlacementIoU(world, loop.final_view) : KnownSpaceIoU(world, loop.final_view);
+  r.iou = SearchIoU(world, loop.final_view);
   r.success = r.explored && r.iou > config.search.success_iou;
   r.time_map_s = loop.observe_s;
   r.time_mcmc_s = loop.mcmc_s;

@@ -61,6 +61,9 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
 // open ground the search never needed to see (far from every building) does not count.
 double BuildingPlacementIoU(const core::World& world, const mapping::MapView& map);
 
+// A search trial's map score: KnownSpaceIoU in closed worlds, BuildingPlacementIoU in open ones.
+double SearchIoU(const core::World& world, const mapping::MapView& map);
+
 // Where that IoU is lost: per true building, the IoU of it and the holes that overlap it (0 for a building
 // no hole overlaps), and the area of holes that overlap no building.
 struct BuildingPlacementBreakdown {

@@ -117,9 +117,8 @@ class SearchTrace {
   }
 
   void Row(const core::World& w, const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
-    const double iou = w.has_boundary() ? experiments::KnownSpaceIoU(w, v) : experiments::BuildingPlacementIoU(w, v);
-    file_ << fmt::format("{},{:.5f},{},{},{},{}", paths.front().size() - 1, iou, v.frontiers.size(), plan_targets_,
-                         v.vertices.size(), v.walls.size());
+    file_ << fmt::format("{},{:.5f},{},{},{},{}", paths.front().size() - 1, experiments::SearchIoU(w, v),
+                         v.frontiers.size(), plan_targets_, v.vertices.size(), v.walls.size());
     for (size_t i = 0; i < paths.size(); ++i)
       file_ << fmt::format(",{:.2f},{:.2f},{}", paths[i].back().x, paths[i].back().y,
                            i < plan_goals_.size() ? plan_goals_[i] : ",,");
