@@ -3,25 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "learning/internal/net_ops.h"
+
 namespace toponav::learning::internal {
 
 namespace F = torch::nn::functional;
 
-torch::Tensor MaxPool2x2Impl::forward(const torch::Tensor& x) {
-  if (x.requires_grad()) return torch::max_pool2d(x, 2);  // training: max_pool2d's backward pass is the faster
-  TORCH_CHECK(x.dim() == 4 && x.size(2) >= 2 && x.size(3) >= 2, "MaxPool2x2: a [B, C, H >= 2, W >= 2] input");
-  const int64_t h = x.size(2) / 2 * 2, w = x.size(3) / 2 * 2;
-  const torch::Tensor rows = torch::max(x.slice(2, 0, h, 2), x.slice(2, 1, h, 2));
-  return torch::max(rows.slice(3, 0, w, 2), rows.slice(3, 1, w, 2));
-}
+torch::Tensor MaxPool2x2Impl::forward(const torch::Tensor& x) { return MaxPool2(x); }
 
 CircularConvImpl::CircularConvImpl(int64_t in, int64_t out) {
   conv = register_module("conv", torch::nn::Conv2d(torch::nn::Conv2dOptions(in, out, 3).padding({1, 0})));
 }
 
-torch::Tensor CircularConvImpl::forward(const torch::Tensor& x) {
-  return conv->forward(F::pad(x, F::PadFuncOptions({1, 1, 0, 0}).mode(torch::kCircular)));
-}
+torch::Tensor CircularConvImpl::forward(const torch::Tensor& x) { return conv->forward(PadCircularWidth(x)); }
 
 namespace {
 
@@ -45,7 +39,7 @@ struct CircularConvTransposeImpl : torch::nn::Module {
     bias = register_parameter("bias", init->bias.detach().clone());
   }
   torch::Tensor forward(const torch::Tensor& x) {
-    const auto padded = F::pad(x, F::PadFuncOptions({1, 1, 0, 0}).mode(torch::kCircular));
+    const auto padded = PadCircularWidth(x);
     const auto y =
         F::conv_transpose2d(padded, weight, F::ConvTranspose2dFuncOptions().bias(bias).stride(2).output_padding(1));
     return y.slice(3, 2, y.size(3) - 2);
@@ -56,9 +50,7 @@ TORCH_MODULE(CircularConvTranspose);
 
 // Crops one cell from every border (the transposed convolution's 2H + 2 -> 2H).
 struct CropImpl : torch::nn::Module {
-  torch::Tensor forward(const torch::Tensor& x) {
-    return x.slice(2, 1, x.size(2) - 1).slice(3, 1, x.size(3) - 1);
-  }
+  torch::Tensor forward(const torch::Tensor& x) { return x.slice(2, 1, x.size(2) - 1).slice(3, 1, x.size(3) - 1); }
 };
 TORCH_MODULE(Crop);
 

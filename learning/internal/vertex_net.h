@@ -12,11 +12,8 @@ struct CircularConvImpl : torch::nn::Module {
 };
 TORCH_MODULE(CircularConv);
 
-// A 2x2 max-pool with stride 2, equal to torch::nn::MaxPool2d(2) value for value (an odd last row or column
-// is dropped).  Without gradients (inference, validation) it is the elementwise maximum of the even and odd
-// rows, then of the even and odd columns: with LibTorch 1.13 on one CPU thread 0.24 ms on a [1, 16, 128, 512]
-// input against max_pool2d's 5.5 ms.  With them (training) it is max_pool2d, whose backward pass is the
-// faster.  It has no parameters, so models saved with MaxPool2d load unchanged.
+// The encoder's 2x2 max-pool with stride 2: MaxPool2 (net_ops.h), equal to torch::nn::MaxPool2d(2) value for
+// value and in its gradient.  It has no parameters, so models saved with MaxPool2d load unchanged.
 struct MaxPool2x2Impl : torch::nn::Module {
   torch::Tensor forward(const torch::Tensor& x);
 };
