@@ -153,7 +153,7 @@ GridOutput VertexGrid(const torch::Tensor& logits) {  // [5, 32, 128]
 std::pair<GridOutput, SubgoalOutput> VertexModel::PredictWithGoal(const core::Panorama& image,
                                                                   const GoalInView& goal) const {
   TOPONAV_CHECK(impl_->options.subgoal, "PredictWithGoal on a model without the subgoal extension");
-  torch::NoGradGuard no_grad;
+  c10::InferenceMode inference;  // no autograd bookkeeping at all
   impl_->module().eval();
   const auto [logits, out] = impl_->Run(ImageTensor(image).unsqueeze(0).to(impl_->device), {goal});
   SubgoalOutput s;
@@ -166,13 +166,13 @@ std::pair<GridOutput, SubgoalOutput> VertexModel::PredictWithGoal(const core::Pa
 
 GridOutput VertexModel::Predict(const core::Panorama& image) const {
   if (impl_->options.subgoal) return PredictWithGoal(image, {}).first;
-  torch::NoGradGuard no_grad;
+  c10::InferenceMode inference;  // no autograd bookkeeping at all
   impl_->module().eval();
   return VertexGrid(impl_->net->forward(ImageTensor(image).unsqueeze(0).to(impl_->device)).squeeze(0).to(torch::kCPU));
 }
 
 double VertexModel::Loss(const std::vector<LabelledImage>& batch) const {
-  torch::NoGradGuard no_grad;
+  c10::InferenceMode inference;  // no autograd bookkeeping at all
   impl_->module().eval();
   return impl_->BatchLoss(batch).item<double>();
 }

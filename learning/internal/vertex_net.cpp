@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "learning/internal/batch_norm_leaky.h"
 #include "learning/internal/net_ops.h"
 
 namespace toponav::learning::internal {
@@ -21,11 +22,17 @@ namespace {
 
 int64_t Scaled(int64_t channels, double width) { return std::max<int64_t>(4, int64_t(std::lround(channels * width))); }
 
+// BatchNorm -> LeakyReLU(0.1) as one module, and an Identity where the LeakyReLU module was, so the modules'
+// names (their index in the Sequential), and with them the model files, stay as they were.
+void AddNormLeaky(torch::nn::Sequential& s, int64_t channels) {
+  s->push_back(BatchNormLeaky(channels, 0.1));
+  s->push_back(torch::nn::Identity());
+}
+
 // [3x3 conv -> BatchNorm -> LeakyReLU(0.1)]
 void AddConv(torch::nn::Sequential& s, int64_t in, int64_t out) {
   s->push_back(CircularConv(in, out));
-  s->push_back(torch::nn::BatchNorm2d(out));
-  s->push_back(torch::nn::LeakyReLU(torch::nn::LeakyReLUOptions().negative_slope(0.1)));
+  AddNormLeaky(s, out);
 }
 
 // The decoder's 2x upsampling: a 3x3 transposed convolution with stride 2, its input padded circularly by one
@@ -69,8 +76,7 @@ void AddEncoderBlock(torch::nn::Sequential& s, int64_t in, int64_t out) {
 void AddDecoderBlock(torch::nn::Sequential& s, int64_t in, int64_t out) {
   AddConv(s, in, out);
   s->push_back(CircularConvTranspose(out, out));
-  s->push_back(torch::nn::BatchNorm2d(out));
-  s->push_back(torch::nn::LeakyReLU(torch::nn::LeakyReLUOptions().negative_slope(0.1)));
+  AddNormLeaky(s, out);
   s->push_back(Crop());
 }
 
