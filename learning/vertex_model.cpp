@@ -192,7 +192,7 @@ double VertexModel::TrainStep(const std::vector<LabelledImage>& batch, double lr
 
 namespace {
 
-constexpr int kModulesPerEncoderBlock = 7;  // conv, BatchNorm, LeakyReLU twice, max-pool
+constexpr int kModulesPerEncoderBlock = 7;  // conv, BatchNormLeaky, Identity twice, max-pool
 
 // A tensor's name in the vertex network's terms (a subgoal network's encoder is split in two at block 3).
 std::string CanonicalName(const std::string& name) {

@@ -99,8 +99,8 @@ void ForPlanes(const torch::Tensor& t, int64_t c, F f) {
   for (int64_t b = 0; b < t.size(0); ++b) f((b * channels + c) * plane, plane);
 }
 
-// Per channel: the batch mean and the biased variance (sums taken about the channel's first value, so a large
-// mean does not cancel the variance away).  Two float tensors [C].
+// Per channel: the batch mean and the biased variance, its sums taken about the mean of the channel's first
+// plane, so that a mean far from 0 does not cancel the variance away.  Two float tensors [C].
 std::pair<torch::Tensor, torch::Tensor> ChannelStatistics(const torch::Tensor& x) {
   const int64_t channels = x.size(1);
   torch::Tensor mean = torch::empty({channels}, x.options()), var = torch::empty({channels}, x.options());
@@ -109,8 +109,11 @@ std::pair<torch::Tensor, torch::Tensor> ChannelStatistics(const torch::Tensor& x
   const double count = double(x.numel() / channels);
   at::parallel_for(0, channels, 1, [&](int64_t c0, int64_t c1) {
     for (int64_t c = c0; c < c1; ++c) {
+      const int64_t plane = x.size(2) * x.size(3);
       double sum = 0, sum_sq = 0;
-      const float offset = in[c * x.size(2) * x.size(3)];
+      StatisticsSums(in + c * plane, plane, 0.0f, &sum, &sum_sq);
+      const float offset = float(sum / double(plane));
+      sum = sum_sq = 0;
       ForPlanes(x, c, [&](int64_t at, int64_t n) { StatisticsSums(in + at, n, offset, &sum, &sum_sq); });
       const double m = sum / count;
       mean_out[c] = float(offset + m);
@@ -157,6 +160,7 @@ struct BatchNormLeakyFn : torch::autograd::Function<BatchNormLeakyFn> {
 };
 
 variable_list BatchNormLeakyFn::backward(AutogradContext* ctx, variable_list grads) {
+  TORCH_CHECK(!torch::GradMode::is_enabled(), "BatchNormLeaky: no second derivative (create_graph)");
   const auto saved = ctx->get_saved_variables();
   const torch::Tensor& x = saved[0];
   const std::vector<Channel> channels =
@@ -189,7 +193,8 @@ variable_list BatchNormLeakyFn::backward(AutogradContext* ctx, variable_list gra
 torch::Tensor BatchNormLeakyTraining(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& bias,
                                      torch::Tensor& running_mean, torch::Tensor& running_var, double momentum,
                                      double eps, double slope) {
-  TORCH_CHECK(x.dim() == 4 && x.is_cpu() && x.scalar_type() == torch::kFloat, "BatchNormLeakyTraining: float32 CPU");
+  TORCH_CHECK(x.dim() == 4 && x.size(1) > 0 && x.is_cpu() && x.scalar_type() == torch::kFloat,
+              "BatchNormLeakyTraining: a float32 CPU input [B, C > 0, H, W]");
   const int64_t count = x.numel() / x.size(1);
   TORCH_CHECK(count >= 2, "BatchNormLeakyTraining: batch statistics need two values a channel");
   const torch::Tensor xc = x.contiguous();
@@ -212,6 +217,7 @@ BatchNormLeakyImpl::BatchNormLeakyImpl(int64_t channels, double slope_) : slope(
 }
 
 torch::Tensor BatchNormLeakyImpl::forward(const torch::Tensor& x) {
+  TORCH_CHECK(x.dim() == 4, "BatchNormLeaky: a [B, C, H, W] input");
   if (is_training()) {
     torch::NoGradGuard no_grad;
     num_batches_tracked += 1;

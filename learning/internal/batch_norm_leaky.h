@@ -1,10 +1,9 @@
 #pragma once
 // BatchNorm2d followed by LeakyReLU, the pair after every convolution of the vertex network, as one module.
 // In training on the CPU (float32) it is one autograd function with its gradient written out: two passes over
-// the activations forward (batch statistics; normalize, scale, shift and LeakyReLU) and two backward, where
-// LibTorch 1.13 makes four and four and keeps the BatchNorm's output alive for the LeakyReLU's gradient.  In
-// evaluation, and on other devices and types, it is torch::batch_norm then torch::leaky_relu, as the two
-// modules were: the same outputs, so the same trials.
+// the activations forward (batch statistics; normalize, scale, shift and LeakyReLU) and two backward, and only
+// its input kept for the backward pass.  In evaluation, and on other devices and types, it is
+// torch::batch_norm then torch::leaky_relu: the outputs of BatchNorm2d then LeakyReLU, bit for bit.
 #include <torch/torch.h>
 
 namespace toponav::learning::internal {

@@ -15,6 +15,7 @@ struct PadCircularWidthFn : torch::autograd::Function<PadCircularWidthFn> {
     return torch::cat({x.narrow(3, w - 1, 1), x, x.narrow(3, 0, 1)}, 3);
   }
   static variable_list backward(AutogradContext*, variable_list grads) {
+    TORCH_CHECK(!torch::GradMode::is_enabled(), "PadCircularWidth: no second derivative (create_graph)");
     const torch::Tensor& g = grads[0];
     const int64_t w = g.size(3) - 2;
     torch::Tensor gx = g.narrow(3, 1, w).clone(torch::MemoryFormat::Contiguous);  // never the incoming gradient
@@ -78,6 +79,7 @@ struct MaxPool2Fn : torch::autograd::Function<MaxPool2Fn> {
     return out;
   }
   static variable_list backward(AutogradContext* ctx, variable_list grads) {
+    TORCH_CHECK(!torch::GradMode::is_enabled(), "MaxPool2: no second derivative (create_graph)");
     const torch::Tensor which = ctx->get_saved_variables()[0];
     const std::vector<int64_t> sizes = ctx->saved_data["sizes"].toIntVector();
     const torch::Tensor g = grads[0].contiguous();

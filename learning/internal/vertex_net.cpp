@@ -22,8 +22,8 @@ namespace {
 
 int64_t Scaled(int64_t channels, double width) { return std::max<int64_t>(4, int64_t(std::lround(channels * width))); }
 
-// BatchNorm -> LeakyReLU(0.1) as one module, and an Identity where the LeakyReLU module was, so the modules'
-// names (their index in the Sequential), and with them the model files, stay as they were.
+// BatchNorm -> LeakyReLU(0.1) as one module, then an Identity: two modules a pair, so the Sequential's indices
+// (the tensors' names in model files) are those of files saved with BatchNorm2d and LeakyReLU modules.
 void AddNormLeaky(torch::nn::Sequential& s, int64_t channels) {
   s->push_back(BatchNormLeaky(channels, 0.1));
   s->push_back(torch::nn::Identity());

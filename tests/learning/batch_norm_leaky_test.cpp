@@ -37,7 +37,7 @@ TEST(BatchNormLeaky, TrainsLikeBatchNormThenLeakyReluValuesGradientsAndRunningSt
     Reference ref(channels);
     {
       torch::NoGradGuard no_grad;
-      ref.norm->weight.copy_(torch::rand({channels}) + 0.5);
+      ref.norm->weight.copy_(torch::randn({channels}));  // negative ones too
       ref.norm->bias.copy_(torch::randn({channels}));
     }
     BatchNormLeaky fused(channels, 0.1);
