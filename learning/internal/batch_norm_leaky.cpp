@@ -23,28 +23,38 @@ struct Channel {
 // The loops below are written to vectorize (CMakeLists.txt compiles this file with -fno-trapping-math, which
 // lets the compiler turn the LeakyReLU's select into a blend; the results are the same).
 
-// Over n values of one plane: the sums of d = x - offset and of d * d.
-void StatisticsSums(const float* __restrict x, int64_t n, float offset, double* sum, double* sum_sq) {
+// Over values 0..n-1: the sums of a and of a * b, where f(i, a, b) gives the pair at i.  Float lanes, each
+// block's sums added to the doubles.
+template <class F>
+void PairSums(int64_t n, F f, double* sum_a, double* sum_ab) {
   for (int64_t start = 0; start < n; start += kBlock) {
     const int64_t end = std::min(n, start + kBlock);
-    float s[kLanes] = {}, q[kLanes] = {};
+    float s[kLanes] = {}, p[kLanes] = {};
     int64_t i = start;
     for (; i + kLanes <= end; i += kLanes)
       for (int k = 0; k < kLanes; ++k) {
-        const float d = x[i + k] - offset;
-        s[k] += d;
-        q[k] += d * d;
+        float a, b;
+        f(i + k, a, b);
+        s[k] += a;
+        p[k] += a * b;
       }
     for (; i < end; ++i) {
-      const float d = x[i] - offset;
-      s[0] += d;
-      q[0] += d * d;
+      float a, b;
+      f(i, a, b);
+      s[0] += a;
+      p[0] += a * b;
     }
     for (int k = 0; k < kLanes; ++k) {
-      *sum += s[k];
-      *sum_sq += q[k];
+      *sum_a += s[k];
+      *sum_ab += p[k];
     }
   }
+}
+
+// Over n values of one plane: the sums of d = x - offset and of d * d.
+void StatisticsSums(const float* __restrict x, int64_t n, float offset, double* sum, double* sum_sq) {
+  PairSums(
+      n, [&](int64_t i, float& a, float& b) { a = b = x[i] - offset; }, sum, sum_sq);
 }
 
 // The gradient through the LeakyReLU at one value.
@@ -56,26 +66,11 @@ inline float Dz(float x, float g, const Channel& c) {
 // Over n values of one plane: the sums of dz and of dz * xhat.
 void GradientSums(const float* __restrict x, const float* __restrict g, int64_t n, const Channel& c, double* sum_dz,
                   double* sum_dz_xhat) {
-  for (int64_t start = 0; start < n; start += kBlock) {
-    const int64_t end = std::min(n, start + kBlock);
-    float s[kLanes] = {}, p[kLanes] = {};
-    int64_t i = start;
-    for (; i + kLanes <= end; i += kLanes)
-      for (int k = 0; k < kLanes; ++k) {
-        const float dz = Dz(x[i + k], g[i + k], c);
-        s[k] += dz;
-        p[k] += dz * ((x[i + k] - c.mean) * c.invstd);
-      }
-    for (; i < end; ++i) {
-      const float dz = Dz(x[i], g[i], c);
-      s[0] += dz;
-      p[0] += dz * ((x[i] - c.mean) * c.invstd);
-    }
-    for (int k = 0; k < kLanes; ++k) {
-      *sum_dz += s[k];
-      *sum_dz_xhat += p[k];
-    }
-  }
+  const auto pair = [&](int64_t i, float& dz, float& xhat) {
+    dz = Dz(x[i], g[i], c);
+    xhat = (x[i] - c.mean) * c.invstd;
+  };
+  PairSums(n, pair, sum_dz, sum_dz_xhat);
 }
 
 void NormalizePlane(const float* __restrict x, int64_t n, const Channel& c, float* __restrict y) {
