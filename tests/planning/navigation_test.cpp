@@ -64,6 +64,21 @@ TEST(VisibilityGraph, ClosedWallMeansNoPathNotAMagicCost) {
   EXPECT_EQ(p.status, PlanStatus::kNoPath);
 }
 
+TEST(VisibilityGraph, AFreeStandingWallHasNodesToGoRoundItsEndsAPlainAddedWallHasNone) {
+  // A motion block across the way: the way round it turns at one of its ends.  Walls added with AddWalls (a
+  // region's edge, blocked frontier parts) get no graph nodes, so a way that must turn at their end is not
+  // found.
+  const core::Segment2 wall{{0, -5}, {0, 5}};
+  mapping::MapView free_standing = View({}, {}, {testing::Rect(-20, -20, 20, 20)});
+  mapping::MapView plain = free_standing;
+  AddFreeStandingWall(&free_standing, wall);
+  AddWalls(&plain, {wall.a, wall.b});
+  const Path round = VisibilityGraph(free_standing, Fine(), false).Plan({-1, 0}, {1, 0});
+  ASSERT_TRUE(round);
+  EXPECT_NEAR(round.cost, 2 * std::sqrt(26.0), 0.3);
+  EXPECT_FALSE(VisibilityGraph(plain, Fine(), false).Plan({-1, 0}, {1, 0}));
+}
+
 TEST(VisibilityGraph, ExplorationStaysInKnownSpace) {
   // Known space is an L: the straight line from one arm to the other leaves it, so the path bends.
   const core::Ring L{{0, 0}, {10, 0}, {10, 2}, {2, 2}, {2, 10}, {0, 10}};
