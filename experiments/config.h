@@ -77,7 +77,8 @@ struct SearchOptions {
                                   // of them (false: the nearest frontier, the paper's); teams are assigned
   bool block_when_stuck = false;  // where an agent makes no headway along its path for stuck_steps steps, a
                                   // wall 4 steps long across its way is added for the planners (searches and
-                                  // goal-directed trials)
+                                  // goal-directed trials; in the latter also where a nudge finds no frontier
+                                  // near to give up)
   bool close_buildings = false;   // open worlds: a straight frontier between two map vertices that walls
                                   // already join the long way round is a building's last side, no target
   double inspect_bend = 0.0;      // > 0: before the search ends, agents look from inspect_standoff at each map

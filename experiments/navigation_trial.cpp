@@ -69,13 +69,15 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 }
 
 // The goal-directed policy: the planner's way to the goal every step.  An agent that makes no headway is nudged
-// as in a search, and the frontier it stands at is blocked where it stood: a wall the map has not accepted yet
-// (its vertices seen edge-on or from too close) that the optimistic way runs through.  The part of a blocked
-// frontier within search.give_up_probe_radius of the agent is a wall to the planners (the rest of it may hold
-// the opening the agent was heading for), and the frontier's target lies on its longest other piece (a
-// frontier with none is no target).  With search.block_when_stuck, steps that make no headway
-// along the path also put a short wall across the way (planning::MotionBlocks): a true wall the map lacks
-// inside known space, with no frontier near to block.
+// as in a search; pacing forth and back (planning::PacedForthAndBack) counts as no headway too.  The frontier
+// it stands at is blocked where it stood: a wall the map has not accepted yet (its vertices seen edge-on or
+// from too close, or a blank wall longer than the sensor's range) that the optimistic way runs through.  The
+// part of a blocked frontier within search.give_up_probe_radius of the agent is a free-standing wall to the
+// planners (graph nodes round its ends; the rest of the frontier may hold the opening the agent was heading
+// for), and the frontier's target lies on its longest other piece (a frontier with none is no target).  With
+// search.block_when_stuck, steps that make no headway along the path, and a nudge with no frontier near to
+// block, put a short wall across the way (planning::MotionBlocks): a true wall the map lacks inside known
+// space.
 // Where the map cuts the goal off (a goal-directed trial's goal is reachable: some wall of the map is false),
 // Recover() tries in turn a way through a doorway hypothesis (planning/doorways.h), the blocked frontiers and
 // motion blocks taken back, and a frontier or a suspected false wall to look at from close by
@@ -89,6 +91,7 @@ class NavigationPolicy : public AgentPolicy {
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
+        step_length_(MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
@@ -104,7 +107,7 @@ class NavigationPolicy : public AgentPolicy {
     if (int(window_.size()) == options_.stuck_window && Huddled(window_, options_.stuck_span)) return End("stuck");
     blocked_.Update(state.view->frontiers);
     mapping::MapView view = WithRegionWalls(*state.view, region_);
-    for (const auto& e : blocked_.probed()) planning::AddWalls(&view, {e.a, e.b});
+    for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&view, e);
     if (blocks_ && !blocks_->blocks().empty()) view = blocks_->With(view);
     const planning::VisibilityGraph graph(view, planning_, false);
     const std::vector<planning::FrontierTarget> targets = UnprobedTargets(*state.view);
@@ -127,13 +130,17 @@ class NavigationPolicy : public AgentPolicy {
   sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& step, sim::MotionSim& motion,
                             core::Rng& rng) override {
     const bool has_path = choice_.status == planning::PlanStatus::kFound && choice_.path.points.size() > 1;
-    const bool stuck = stuck_.NoHeadway((*state.trails)[0], has_path, !has_path, step.pose.position(), step.distance);
-    if (blocks_ && has_path && !(*state.trails)[0].empty())
-      blocks_->Record(agent, choice_.path.points, (*state.trails)[0].back(), step.pose.position());
-    if (!stuck_.Record(agent, stuck)) return step;
+    const std::vector<Vec2>& trail = (*state.trails)[0];
     const Vec2 at = step.pose.position();
+    const bool stuck = (has_path && planning::PacedForthAndBack(trail, at, step_length_)) ||
+                       stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);
+    if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, choice_.path.points, trail.back(), at);
+    if (!stuck_.Record(agent, stuck)) return step;
     const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
-    if (blocked >= 0) blocked_.GiveUp(blocked, state.view->frontiers, &at);
+    if (blocked >= 0)
+      blocked_.GiveUp(blocked, state.view->frontiers, &at);
+    else if (blocks_ && has_path && !trail.empty())
+      blocks_->Block(trail.back(), choice_.path.points[1]);
     if (doorway_) failed_doorways_.push_back(*doorway_);
     ++nudges_;
     return NudgeRandomly(motion, agent, state.step_length, rng);
@@ -203,6 +210,7 @@ class NavigationPolicy : public AgentPolicy {
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
+  double step_length_;
   planning::GivenUpFrontiers blocked_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   double block_reach_;

@@ -33,10 +33,19 @@ bool MotionBlocks::Record(int agent, const std::vector<Vec2>& path, const Vec2& 
   }
   if (++count < steps_) return false;
   count = 0;
-  const Vec2 centre = before + dir * ahead_;
+  Add(before, dir);
+  return true;
+}
+
+void MotionBlocks::Block(const Vec2& at, const Vec2& toward) {
+  const double reach = core::Distance(at, toward);
+  if (reach >= 1e-9) Add(at, (toward - at) / reach);
+}
+
+void MotionBlocks::Add(const Vec2& at, const Vec2& dir) {
+  const Vec2 centre = at + dir * ahead_;
   const Vec2 across{-dir.y * half_width_, dir.x * half_width_};
   blocks_.push_back({centre - across, centre + across});
-  return true;
 }
 
 void MotionBlocks::Clear() {

@@ -98,4 +98,12 @@ bool StuckMonitor::Record(int agent, bool no_headway) {
   return true;
 }
 
+bool PacedForthAndBack(const std::vector<Vec2>& trail, const Vec2& now, double step_length) {
+  if (trail.size() < 2) return false;
+  const Vec2& from = trail[trail.size() - 2];
+  const Vec2& mid = trail.back();
+  const double half = 0.5 * step_length;
+  return core::Distance(from, mid) >= half && core::Distance(mid, now) >= half && core::Distance(from, now) < half;
+}
+
 }  // namespace toponav::planning

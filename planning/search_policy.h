@@ -77,4 +77,10 @@ class StuckMonitor {
   double step_length_;
 };
 
+// True if the agent's last two steps, each at least half of 'step_length' long, took it forth and back: 'now'
+// lies within half a step of where the first began ('trail': positions before this step).  An agent heading
+// for a graph node inside a wall the map lacks paces so, and its forward steps make headway along the path,
+// so StuckMonitor::NoHeadway and MotionBlocks do not count them.
+bool PacedForthAndBack(const std::vector<core::Vec2>& trail, const core::Vec2& now, double step_length);
+
 }  // namespace toponav::planning

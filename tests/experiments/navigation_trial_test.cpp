@@ -149,22 +149,40 @@ TEST(NavigationTrial, AnAgentPressingAtAWallItSawOnlyEdgeOnGoesOnToTheOpeningFar
 
 TEST(NavigationTrial, AnAgentMakingNoHeadwayAtAWallTheMapLacksInKnownSpaceGoesRoundIt) {
   // Tuning maze 7395, optimistic, from a pose the trial from the maze's start passed: the way to the goal runs
-  // through a true wall the map lacks, inside known space with no frontier near it to block, and the agent
-  // pressed at it until the step cap (200 steps; from the maze's start it ended "stuck" after 305).  The maze
-  // configs' search.block_when_stuck puts a short wall across the way there.
+  // through a true wall the map lacks, inside known space with no frontier near it to block, and an agent that
+  // only nudged pressed at it until the step cap (200 steps; from the maze's start it ended "stuck" after
+  // 305).  Steps without headway put a short wall across the way there (search.block_when_stuck), and the
+  // agent's pacing in front of the wall counts as no headway.
   Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
   ASSERT_TRUE(cfg.search.block_when_stuck);
   core::World world = sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7395);
   world.start = {-44, -10.8, 3.5};
   NavigationTrialOptions o;
   o.planner = GoalPlanner::kOptimistic;
-  o.max_steps = 200;
+  o.max_steps = 200;  // it reaches the goal after 131
   const NavigationResult r = RunNavigationTrial(world, cfg, o, 7395);
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
-  cfg.search.block_when_stuck = false;
-  o.max_steps = 150;
-  const NavigationResult without = RunNavigationTrial(world, cfg, o, 7395);
-  EXPECT_FALSE(without.reached) << "without the blocks the agent still presses at the wall";
+  EXPECT_LT(r.distance, 1.5 * r.shortest) << "travelled " << r.distance << ", shortest way " << r.shortest;
+}
+
+TEST(NavigationTrial, AnAgentAtABlankWallLongerThanTheSensorsRangeGoesRoundThePiecesItGaveUp) {
+  // Tuning maze 8317, optimistic: the goal lies behind a corridor's side wall about 150 units long, with no
+  // corner the network detects and longer than the sensor's range, so it never enters the map and a frontier
+  // runs along it.  The agent gives the frontier up piece by piece where it presses.  With the pieces walls
+  // without graph nodes round their ends, a way that had to turn round one found no way at all, every piece was
+  // taken back and the agent pressed at the wall again until it ended "stuck" after 245 steps.
+  const NavigationResult r = RunPaperMaze(8317, GoalPlanner::kOptimistic, 400);  // the goal after 357 steps
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+}
+
+TEST(NavigationTrial, AnAgentPacingForthAndBackAtAWallTheMapLacksIsNudgedAndBlocked) {
+  // Tuning maze 7071, optimistic: a graph node round a given-up piece's end lies inside the thick wall the
+  // piece's frontier stands for, and the way to it paces the agent 1.7 units forward and 1.5 back at the
+  // wall's corner; every forward step makes headway.  Counted as no headway, the pacing gets the agent nudged,
+  // and with no frontier near to give up, a motion block goes across its way.  Without the pacing test the run
+  // ends "stuck" after 319 steps, without the block after 463.
+  const NavigationResult r = RunPaperMaze(7071, GoalPlanner::kOptimistic, 560);  // the goal after 532 steps
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
 }
 
 TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) {

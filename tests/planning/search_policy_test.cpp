@@ -152,6 +152,17 @@ TEST(StuckMonitor, AnAgentIsDueForANudgeAfterStuckStepsWithoutHeadway) {
   EXPECT_TRUE(m.Record(0, true));
 }
 
+TEST(PacedForthAndBack, TwoFullStepsForthAndBackArePacingSlowPressesAndWalkingOnAreNot) {
+  // Steps of 2; the 7071 pattern: 1.7 forward, 1.5 back.
+  EXPECT_TRUE(PacedForthAndBack({{0, 0}, {1.7, 0}}, {0.2, 0}, 2.0));
+  EXPECT_FALSE(PacedForthAndBack({{0, 0}, {1.7, 0}}, {3.4, 0}, 2.0)) << "walking on";
+  EXPECT_FALSE(PacedForthAndBack({{0, 0}, {1.7, 0}}, {0.2, 1.4}, 2.0)) << "back, but 1.4 to the side";
+  EXPECT_FALSE(PacedForthAndBack({{0, 0}, {0.3, 0}}, {0.1, 0}, 2.0)) << "pressing with short steps";
+  EXPECT_FALSE(PacedForthAndBack({{0, 0}, {1.7, 0}}, {1.2, 0}, 2.0)) << "a short step back";
+  EXPECT_FALSE(PacedForthAndBack({{1.7, 0}}, {0, 0}, 2.0)) << "one step is no pacing yet";
+  EXPECT_FALSE(PacedForthAndBack({}, {0, 0}, 2.0));
+}
+
 TEST(Planner, SearchPlannersAreTheNearestFrontierForOneAgentAndTheAssignmentForATeam) {
   const mapping::MapView view = OpenSquare();
   const VisibilityGraph g(view, {}, false);
