@@ -91,7 +91,6 @@ class NavigationPolicy : public AgentPolicy {
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
-        step_length_(MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
@@ -132,7 +131,7 @@ class NavigationPolicy : public AgentPolicy {
     const bool has_path = choice_.status == planning::PlanStatus::kFound && choice_.path.points.size() > 1;
     const std::vector<Vec2>& trail = (*state.trails)[0];
     const Vec2 at = step.pose.position();
-    const bool stuck = (has_path && planning::PacedForthAndBack(trail, at, step_length_)) ||
+    const bool stuck = (has_path && planning::PacedForthAndBack(trail, at, state.step_length)) ||
                        stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);
     if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, choice_.path.points, trail.back(), at);
     if (!stuck_.Record(agent, stuck)) return step;
@@ -210,7 +209,6 @@ class NavigationPolicy : public AgentPolicy {
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
-  double step_length_;
   planning::GivenUpFrontiers blocked_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   double block_reach_;

@@ -94,10 +94,11 @@ bool AlongVertexRow(const mapping::Frontier& frontier, const mapping::MapView& v
 bool ClosesWallChain(const mapping::Frontier& frontier, const mapping::MapView& view, const PlannerOptions& options);
 
 // Adds the polyline's segments to 'view' as walls (no map vertices at their ends): what planners must not
-// cross beyond the map -- a region's edge, frontiers blocked or masked.  'closed': also last -> first.
+// cross beyond the map -- a region's edge, frontiers masked.  'closed': also last -> first.
 void AddWalls(mapping::MapView* view, const std::vector<core::Vec2>& polyline, bool closed = false);
 // Adds 'wall' to 'view' with map vertices of its own at its ends (ids above the view's), so the visibility
-// graph has nodes to go round it: an obstacle standing free of the map's walls.
+// graph has nodes to go round it: an obstacle standing free of the map's walls (a motion block, a given-up
+// frontier piece).
 void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall);
 
 // The frontiers of 'view' the targets name, in the targets' order.

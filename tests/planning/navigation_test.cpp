@@ -65,9 +65,9 @@ TEST(VisibilityGraph, ClosedWallMeansNoPathNotAMagicCost) {
 }
 
 TEST(VisibilityGraph, AFreeStandingWallHasNodesToGoRoundItsEndsAPlainAddedWallHasNone) {
-  // A motion block across the way: the way round it turns at one of its ends.  Walls added with AddWalls (a
-  // region's edge, blocked frontier parts) get no graph nodes, so a way that must turn at their end is not
-  // found.
+  // A motion block or a given-up frontier piece across the way: the way round it turns at one of its ends.
+  // Walls added with AddWalls (a region's edge, masked frontiers) get no graph nodes, so a way that must turn
+  // at their end is not found.
   const core::Segment2 wall{{0, -5}, {0, 5}};
   mapping::MapView free_standing = View({}, {}, {testing::Rect(-20, -20, 20, 20)});
   mapping::MapView plain = free_standing;
