@@ -91,6 +91,7 @@ json NavigationJson(const TrialId& id, const NavigationResult& r) {
   j["distance"] = r.distance;
   j["shortest"] = r.shortest;
   j["nudges"] = r.nudges;
+  j["blocks"] = r.blocks.size();
   j["end_reason"] = r.end_reason;
   j["wall_time_s"] = r.wall_time_s;
   return j;
@@ -123,7 +124,7 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
   n.on_step = on_step;
   const NavigationResult r = RunNavigationTrial(w, config, n, id.seed, view);
   *paths = {r.path};
-  *extras = {w.goal, r.frontier_ps, {}};
+  *extras = {w.goal, r.frontier_ps, r.blocks};
   return NavigationJson(id, r);
 }
 

@@ -69,7 +69,8 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 }
 
 // The goal-directed policy: the planner's way to the goal every step.  An agent that makes no headway is nudged
-// as in a search; pacing forth and back (planning::PacedForthAndBack) counts as no headway too.  The frontier
+// as in a search; pacing forth and back (planning::PacedForthAndBack) and a loop of steps that stays within two
+// steps across for 2 * search.stuck_steps steps (planning::HeldInPlace) count as no headway too.  The frontier
 // it stands at is blocked where it stood: a wall the map has not accepted yet (its vertices seen edge-on or
 // from too close, or a blank wall longer than the sensor's range) that the optimistic way runs through.  The
 // part of a blocked frontier within search.give_up_probe_radius of the agent is a free-standing wall to the
@@ -91,6 +92,7 @@ class NavigationPolicy : public AgentPolicy {
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
+        held_steps_(2 * config.search.stuck_steps),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
@@ -131,15 +133,17 @@ class NavigationPolicy : public AgentPolicy {
     const bool has_path = choice_.status == planning::PlanStatus::kFound && choice_.path.points.size() > 1;
     const std::vector<Vec2>& trail = (*state.trails)[0];
     const Vec2 at = step.pose.position();
-    const bool stuck = (has_path && planning::PacedForthAndBack(trail, at, state.step_length)) ||
-                       stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);
-    if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, choice_.path.points, trail.back(), at);
+    const bool held = planning::PacedForthAndBack(trail, at, state.step_length) ||
+                      planning::HeldInPlace(trail, at, held_steps_, 2 * state.step_length);
+    const bool stuck = (has_path && held) || stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);
+    if (blocks_ && has_path && !trail.empty() && blocks_->Record(agent, choice_.path.points, trail.back(), at))
+      added_blocks_.push_back(blocks_->blocks().back());
     if (!stuck_.Record(agent, stuck)) return step;
     const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
     if (blocked >= 0)
       blocked_.GiveUp(blocked, state.view->frontiers, &at);
-    else if (blocks_ && has_path && !trail.empty())
-      blocks_->Block(trail.back(), choice_.path.points[1]);
+    else if (blocks_ && has_path && !trail.empty() && blocks_->Block(trail.back(), choice_.path.points[1]))
+      added_blocks_.push_back(blocks_->blocks().back());
     if (doorway_) failed_doorways_.push_back(*doorway_);
     ++nudges_;
     return NudgeRandomly(motion, agent, state.step_length, rng);
@@ -150,6 +154,7 @@ class NavigationPolicy : public AgentPolicy {
   const std::map<int, double>& estimates() const { return estimates_; }
   const std::string& end_reason() const { return end_reason_; }
   int nudges() const { return nudges_; }
+  const std::vector<core::Segment2>& added_blocks() const { return added_blocks_; }
 
  private:
   // Where the planner finds no way to the goal: the cheapest way through a doorway hypothesis; else, if some
@@ -209,12 +214,14 @@ class NavigationPolicy : public AgentPolicy {
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
+  int held_steps_;  // planning::HeldInPlace's window: as many steps as StuckMonitor's pacing window
   planning::GivenUpFrontiers blocked_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   double block_reach_;
   planning::SuspectInspector inspector_;
   std::optional<Vec2> doorway_;        // the middle of the doorway hypothesis the agent heads through now
   std::vector<Vec2> failed_doorways_;  // middles of those it made no headway through
+  std::vector<core::Segment2> added_blocks_;  // every motion block added, those Recover took back too
   planning::FrontierChoice choice_;
   std::deque<Vec2> window_;
   std::map<int, double> estimates_;
@@ -261,6 +268,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   r.shortest = core::PolylineLength(
       sim::FreePath(world, world.start.position(), world.goal, config.lsp.clearance, config.lsp.cell));
   r.nudges = policy.nudges();
+  r.blocks = policy.added_blocks();
   r.path = loop.paths.at(0);
   r.frontier_ps = policy.estimates();
   r.iou = KnownSpaceIoU(world, loop.final_view);

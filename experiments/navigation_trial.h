@@ -52,6 +52,7 @@ struct NavigationResult {
   double shortest = 0.0;
   std::string end_reason;         // "goal", "stuck", "cut_off" (no way to the goal, nothing to explore), "step_cap"
   int nudges = 0;
+  std::vector<core::Segment2> blocks;  // every motion block added (search.block_when_stuck), taken back or not
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;
   std::vector<core::Vec2> path;

@@ -37,9 +37,11 @@ bool MotionBlocks::Record(int agent, const std::vector<Vec2>& path, const Vec2& 
   return true;
 }
 
-void MotionBlocks::Block(const Vec2& at, const Vec2& toward) {
+bool MotionBlocks::Block(const Vec2& at, const Vec2& toward) {
   const double reach = core::Distance(at, toward);
-  if (reach >= 1e-9) Add(at, (toward - at) / reach);
+  if (reach < 1e-9) return false;
+  Add(at, (toward - at) / reach);
+  return true;
 }
 
 void MotionBlocks::Add(const Vec2& at, const Vec2& dir) {

@@ -21,9 +21,9 @@ class MotionBlocks {
   // step's progress toward path[1] is at least half of min(step, distance to path[1]).  Returns true when this
   // step added a block.
   bool Record(int agent, const std::vector<core::Vec2>& path, const core::Vec2& before, const core::Vec2& after);
-  // Adds a block across the way from 'at' toward 'toward', placed as Record places one; nothing when the two
-  // points coincide.
-  void Block(const core::Vec2& at, const core::Vec2& toward);
+  // Adds a block across the way from 'at' toward 'toward', placed as Record places one; nothing (false) when
+  // the two points coincide.
+  bool Block(const core::Vec2& at, const core::Vec2& toward);
   const std::vector<core::Segment2>& blocks() const { return blocks_; }
   // Every block taken back, and the counts of steps without headway restarted (a goal-directed agent whose map
   // is sealed retries).

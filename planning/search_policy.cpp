@@ -106,4 +106,16 @@ bool PacedForthAndBack(const std::vector<Vec2>& trail, const Vec2& now, double s
   return core::Distance(from, mid) >= half && core::Distance(mid, now) >= half && core::Distance(from, now) < half;
 }
 
+bool HeldInPlace(const std::vector<Vec2>& trail, const Vec2& now, int steps, double span) {
+  TOPONAV_CHECK(steps >= 1 && span >= 0, "bad held-in-place parameters");
+  if (trail.size() < size_t(steps)) return false;
+  const size_t first = trail.size() - size_t(steps);
+  for (size_t i = first; i < trail.size(); ++i) {
+    if (core::Distance(trail[i], now) > span) return false;
+    for (size_t j = i + 1; j < trail.size(); ++j)
+      if (core::Distance(trail[i], trail[j]) > span) return false;
+  }
+  return true;
+}
+
 }  // namespace toponav::planning

@@ -85,9 +85,11 @@ int RunNavigationCommand(const TrialArgs& a) {
   const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
   if (trace.is_open()) fmt::print("wrote {} ({} rows)\n", a.trace, step);
   const std::string picture = (fs::path(a.out) / "trial.png").string();
-  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, picture, {w.goal, r.frontier_ps, {}});
-  fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, {:.1f} s -> {}\n",
-             seed, r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.wall_time_s, picture);
+  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, picture, {w.goal, r.frontier_ps, r.blocks});
+  fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, motion blocks {}, "
+             "{:.1f} s -> {}\n",
+             seed, r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.blocks.size(), r.wall_time_s,
+             picture);
   return 0;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "core/geometry.h"
 #include "sim/worlds.h"
 #include "tests/testing/worlds.h"
@@ -117,12 +119,16 @@ TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
 }
 
 // A trial of the maze benchmark's config (the learned sensor) in tuning maze 'seed'.
-NavigationResult RunPaperMaze(uint64_t seed, GoalPlanner planner, int max_steps) {
-  const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
+NavigationResult RunMaze(const std::string& config, uint64_t seed, GoalPlanner planner, int max_steps) {
+  const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/" + config);
   NavigationTrialOptions o;
   o.planner = planner;
   o.max_steps = max_steps;
   return RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, seed), cfg, o, seed);
+}
+
+NavigationResult RunPaperMaze(uint64_t seed, GoalPlanner planner, int max_steps) {
+  return RunMaze("paper.yaml", seed, planner, max_steps);
 }
 
 TEST(NavigationTrial, TheMazeConfigLeavesASideOpeningSeenFromDownTheCorridorOpen) {
@@ -183,6 +189,17 @@ TEST(NavigationTrial, AnAgentPacingForthAndBackAtAWallTheMapLacksIsNudgedAndBloc
   // ends "stuck" after 319 steps, without the block after 463.
   const NavigationResult r = RunPaperMaze(7071, GoalPlanner::kOptimistic, 560);  // the goal after 532 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  EXPECT_FALSE(r.blocks.empty()) << "the trial's result lists the motion blocks it added (its picture draws them)";
+}
+
+TEST(NavigationTrial, AnAgentWalkingALoopInPlaceAsItsPlanFlipsIsNudged) {
+  // Tuning maze 7367, the oracle with the simulated sensor: pressed at a wall the map lacks, the agent's way
+  // flipped to another for one step each time the map was sampled again (every 5 steps), so it walked a loop
+  // 1.9 across (1.8 out, 1.2 and 0.8 back, two presses).  The forward steps made headway, so the stuck count
+  // restarted every loop: no nudge, no give-up, and the run ended "stuck" after 150 steps.
+  const NavigationResult r = RunMaze("noisy.yaml", 7367, GoalPlanner::kOracle, 400);  // the goal after 323 steps
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  EXPECT_GT(r.nudges, 0);
 }
 
 TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) {

@@ -42,14 +42,14 @@ TEST(MotionBlocks, AStepWithHeadwayRestartsTheCount) {
 
 TEST(MotionBlocks, BlockPutsOneAcrossTheWayTowardAPointAndNoneWhereThePointsCoincide) {
   MotionBlocks blocks(1, 3, 2.0, 4.0, 2.0);
-  blocks.Block({10, 10}, {10, 30});  // heading north
+  EXPECT_TRUE(blocks.Block({10, 10}, {10, 30}));  // heading north
   ASSERT_EQ(blocks.blocks().size(), 1u);
   const auto& [a, b] = blocks.blocks()[0];
   EXPECT_NEAR(a.y, 12.0, 1e-9);  // 'ahead' in front, 2 * half_width long, across the heading
   EXPECT_NEAR(b.y, 12.0, 1e-9);
   EXPECT_NEAR(std::abs(a.x - b.x), 8.0, 1e-9);
   EXPECT_NEAR(a.x + b.x, 20.0, 1e-9);
-  blocks.Block({10, 10}, {10, 10});
+  EXPECT_FALSE(blocks.Block({10, 10}, {10, 10}));
   EXPECT_EQ(blocks.blocks().size(), 1u);
 }
 

@@ -163,6 +163,22 @@ TEST(PacedForthAndBack, TwoFullStepsForthAndBackArePacingSlowPressesAndWalkingOn
   EXPECT_FALSE(PacedForthAndBack({}, {0, 0}, 2.0));
 }
 
+TEST(HeldInPlace, ALoopOfStepsAcrossLessThanTheSpanIsHeldWalkingOnAndShortTrailsAreNot) {
+  // Steps of 1.8; the tuning maze 7367 pattern, five steps a loop: 1.8 out, 1.2 and 0.8 back, two presses.
+  const std::vector<core::Vec2> loop{{0, 0}, {-0.7, 1.7}, {0, 0.8}, {0, 0}, {0, 0.04}};
+  std::vector<core::Vec2> trail;
+  for (int i = 0; i < 12; ++i) trail.push_back(loop[size_t(i) % loop.size()]);
+  EXPECT_TRUE(HeldInPlace(trail, {-0.7, 1.7}, 12, 3.6));
+  EXPECT_FALSE(HeldInPlace(trail, {-0.7, 1.7}, 13, 3.6)) << "a trail shorter than the window";
+  EXPECT_FALSE(HeldInPlace(trail, {0, 4.0}, 12, 3.6)) << "this step left the loop";
+  trail[0] = {4, 0};
+  EXPECT_FALSE(HeldInPlace(trail, {-0.7, 1.7}, 12, 3.6)) << "the window's first position lies outside the span";
+  EXPECT_TRUE(HeldInPlace(trail, {-0.7, 1.7}, 11, 3.6)) << "the window starts after it";
+  std::vector<core::Vec2> walking;
+  for (int i = 0; i < 12; ++i) walking.push_back({0.5 * i, 0});  // slow, but on its way
+  EXPECT_FALSE(HeldInPlace(walking, {6.0, 0}, 12, 3.6));
+}
+
 TEST(Planner, SearchPlannersAreTheNearestFrontierForOneAgentAndTheAssignmentForATeam) {
   const mapping::MapView view = OpenSquare();
   const VisibilityGraph g(view, {}, false);
