@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <memory>
 #include <optional>
 
@@ -23,14 +22,6 @@ namespace toponav::experiments {
 using core::Vec2;
 
 namespace {
-
-// True when every position of the window lies within 'span' of each other (the reference's stuck test).
-bool Huddled(const std::deque<Vec2>& window, double span) {
-  for (size_t i = 0; i < window.size(); ++i)
-    for (size_t j = i + 1; j < window.size(); ++j)
-      if (core::Distance(window[i], window[j]) > span) return false;
-  return true;
-}
 
 // The planner 'kind' names; for "lsp" also its estimator, which the policy feeds the observations.
 std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, const Config& config, GoalPlanner kind,
@@ -103,9 +94,8 @@ class NavigationPolicy : public AgentPolicy {
     if (core::Distance(at, goal_) <= options_.goal_radius) return End("goal");
     if (cells_ && state.observations)
       for (const auto& z : *state.observations) cells_->Observe(z);
-    window_.push_back(at);
-    if (int(window_.size()) > options_.stuck_window) window_.pop_front();
-    if (int(window_.size()) == options_.stuck_window && Huddled(window_, options_.stuck_span)) return End("stuck");
+    // The reference's stuck test: the last stuck_window positions (this one among them) within stuck_span.
+    if (planning::HeldInPlace((*state.trails)[0], at, options_.stuck_window, options_.stuck_span)) return End("stuck");
     blocked_.Update(state.view->frontiers);
     mapping::MapView view = WithRegionWalls(*state.view, region_);
     for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&view, e);
@@ -223,7 +213,6 @@ class NavigationPolicy : public AgentPolicy {
   std::vector<Vec2> failed_doorways_;  // middles of those it made no headway through
   std::vector<core::Segment2> added_blocks_;  // every motion block added, those Recover took back too
   planning::FrontierChoice choice_;
-  std::deque<Vec2> window_;
   std::map<int, double> estimates_;
   int cut_off_ = 0, nudges_ = 0;
   std::string end_reason_ = "step_cap";
