@@ -1,11 +1,9 @@
 #include "experiments/navigation_trial.h"
 
 #include <chrono>
-#include <cmath>
 #include <memory>
 #include <optional>
 
-#include "core/error.h"
 #include "experiments/agent_loop.h"
 #include "experiments/map_drive.h"
 #include "planning/cell_estimator.h"
@@ -61,7 +59,8 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 
 // The goal-directed policy: the planner's way to the goal every step.  An agent that makes no headway is nudged
 // as in a search; pacing forth and back (planning::PacedForthAndBack) and a loop of steps that stays within two
-// steps across for 2 * search.stuck_steps steps (planning::HeldInPlace) count as no headway too.  The frontier
+// steps across for 2 * search.stuck_steps steps (planning::HeldInPlace) count as no headway too (so an agent
+// that a nudge leaves inside the loop is nudged again every stuck_steps steps until it leaves).  The frontier
 // it stands at is blocked where it stood: a wall the map has not accepted yet (its vertices seen edge-on or
 // from too close, or a blank wall longer than the sensor's range) that the optimistic way runs through.  The
 // part of a blocked frontier within search.give_up_probe_radius of the agent is a free-standing wall to the

@@ -83,8 +83,8 @@ class StuckMonitor {
 // so StuckMonitor::NoHeadway and MotionBlocks do not count them.
 bool PacedForthAndBack(const std::vector<core::Vec2>& trail, const core::Vec2& now, double step_length);
 
-// True if the agent's last 'steps' positions before this step ('trail') and 'now' all lie within 'span' of each
-// other (false while the trail is shorter).  An agent whose plan flips between two ways each time the map is
+// True if the last 'steps' entries of 'trail' and 'now' (which may repeat trail.back()) all lie within 'span' of
+// each other, a distance equal to 'span' included (false while the trail is shorter).  An agent whose plan flips between two ways each time the map is
 // sampled again walks a loop a step or two across, forth, back and pressing, with steps that make headway in
 // between, so neither StuckMonitor::NoHeadway nor PacedForthAndBack counts enough of them in a row.
 bool HeldInPlace(const std::vector<core::Vec2>& trail, const core::Vec2& now, int steps, double span);

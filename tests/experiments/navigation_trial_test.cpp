@@ -118,7 +118,7 @@ TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
   EXPECT_TRUE(estimated) << "every frontier kept the optimistic default";
 }
 
-// A trial of the maze benchmark's config (the learned sensor) in tuning maze 'seed'.
+// A trial of configs/maze/'config' in tuning maze 'seed'.
 NavigationResult RunMaze(const std::string& config, uint64_t seed, GoalPlanner planner, int max_steps) {
   const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/" + config);
   NavigationTrialOptions o;
@@ -127,6 +127,7 @@ NavigationResult RunMaze(const std::string& config, uint64_t seed, GoalPlanner p
   return RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, seed), cfg, o, seed);
 }
 
+// A trial of the maze benchmark's config (the learned sensor).
 NavigationResult RunPaperMaze(uint64_t seed, GoalPlanner planner, int max_steps) {
   return RunMaze("paper.yaml", seed, planner, max_steps);
 }

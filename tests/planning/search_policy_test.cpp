@@ -171,6 +171,7 @@ TEST(HeldInPlace, ALoopOfStepsAcrossLessThanTheSpanIsHeldWalkingOnAndShortTrails
   EXPECT_TRUE(HeldInPlace(trail, {-0.7, 1.7}, 12, 3.6));
   EXPECT_FALSE(HeldInPlace(trail, {-0.7, 1.7}, 13, 3.6)) << "a trail shorter than the window";
   EXPECT_FALSE(HeldInPlace(trail, {0, 4.0}, 12, 3.6)) << "this step left the loop";
+  EXPECT_TRUE(HeldInPlace({{0, 0}, {0, 1}}, {0, 3.6}, 2, 3.6)) << "a distance equal to the span is within it";
   trail[0] = {4, 0};
   EXPECT_FALSE(HeldInPlace(trail, {-0.7, 1.7}, 12, 3.6)) << "the window's first position lies outside the span";
   EXPECT_TRUE(HeldInPlace(trail, {-0.7, 1.7}, 11, 3.6)) << "the window starts after it";
