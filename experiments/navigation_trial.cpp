@@ -82,7 +82,6 @@ class NavigationPolicy : public AgentPolicy {
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
-        held_steps_(2 * config.search.stuck_steps),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
@@ -123,16 +122,15 @@ class NavigationPolicy : public AgentPolicy {
     const std::vector<Vec2>& trail = (*state.trails)[0];
     const Vec2 at = step.pose.position();
     const bool held = planning::PacedForthAndBack(trail, at, state.step_length) ||
-                      planning::HeldInPlace(trail, at, held_steps_, 2 * state.step_length);
+                      planning::HeldInPlace(trail, at, stuck_.pacing_steps(), 2 * state.step_length);
     const bool stuck = (has_path && held) || stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);
-    if (blocks_ && has_path && !trail.empty() && blocks_->Record(agent, choice_.path.points, trail.back(), at))
-      added_blocks_.push_back(blocks_->blocks().back());
+    if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, choice_.path.points, trail.back(), at);
     if (!stuck_.Record(agent, stuck)) return step;
     const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
     if (blocked >= 0)
       blocked_.GiveUp(blocked, state.view->frontiers, &at);
-    else if (blocks_ && has_path && !trail.empty() && blocks_->Block(trail.back(), choice_.path.points[1]))
-      added_blocks_.push_back(blocks_->blocks().back());
+    else if (blocks_ && has_path && !trail.empty())
+      blocks_->Block(trail.back(), choice_.path.points[1]);
     if (doorway_) failed_doorways_.push_back(*doorway_);
     ++nudges_;
     return NudgeRandomly(motion, agent, state.step_length, rng);
@@ -143,7 +141,10 @@ class NavigationPolicy : public AgentPolicy {
   const std::map<int, double>& estimates() const { return estimates_; }
   const std::string& end_reason() const { return end_reason_; }
   int nudges() const { return nudges_; }
-  const std::vector<core::Segment2>& added_blocks() const { return added_blocks_; }
+  // Every motion block added, those Recover took back too (none without search.block_when_stuck).
+  std::vector<core::Segment2> added_blocks() const {
+    return blocks_ ? blocks_->added() : std::vector<core::Segment2>{};
+  }
 
  private:
   // Where the planner finds no way to the goal: the cheapest way through a doorway hypothesis; else, if some
@@ -203,14 +204,12 @@ class NavigationPolicy : public AgentPolicy {
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   std::unique_ptr<planning::Planner> planner_;
   planning::StuckMonitor stuck_;
-  int held_steps_;  // planning::HeldInPlace's window: as many steps as StuckMonitor's pacing window
   planning::GivenUpFrontiers blocked_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   double block_reach_;
   planning::SuspectInspector inspector_;
   std::optional<Vec2> doorway_;        // the middle of the doorway hypothesis the agent heads through now
   std::vector<Vec2> failed_doorways_;  // middles of those it made no headway through
-  std::vector<core::Segment2> added_blocks_;  // every motion block added, those Recover took back too
   planning::FrontierChoice choice_;
   std::map<int, double> estimates_;
   int cut_off_ = 0, nudges_ = 0;

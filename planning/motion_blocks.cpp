@@ -48,6 +48,7 @@ void MotionBlocks::Add(const Vec2& at, const Vec2& dir) {
   const Vec2 centre = at + dir * ahead_;
   const Vec2 across{-dir.y * half_width_, dir.x * half_width_};
   blocks_.push_back({centre - across, centre + across});
+  added_.push_back(blocks_.back());
 }
 
 void MotionBlocks::Clear() {

@@ -25,8 +25,10 @@ class MotionBlocks {
   // the two points coincide.
   bool Block(const core::Vec2& at, const core::Vec2& toward);
   const std::vector<core::Segment2>& blocks() const { return blocks_; }
+  // Every block ever added, those Clear() took back too (pictures, trial records).
+  const std::vector<core::Segment2>& added() const { return added_; }
   // Every block taken back, and the counts of steps without headway restarted (a goal-directed agent whose map
-  // is sealed retries).
+  // is sealed retries); added() keeps them.
   void Clear();
   // 'view' with every block as a free-standing wall (AddFreeStandingWall), so plans go round its ends.
   mapping::MapView With(const mapping::MapView& view) const;
@@ -35,7 +37,7 @@ class MotionBlocks {
   void Add(const core::Vec2& at, const core::Vec2& dir);  // 'dir': unit heading
 
   std::vector<int> count_;
-  std::vector<core::Segment2> blocks_;
+  std::vector<core::Segment2> blocks_, added_;
   int steps_;
   double step_length_, half_width_, ahead_;
 };

@@ -81,7 +81,7 @@ StuckMonitor::StuckMonitor(int num_agents, int stuck_steps, double step_length)
 
 bool StuckMonitor::NoHeadway(const std::vector<Vec2>& trail, bool has_path, bool no_way, const Vec2& now,
                              double moved) const {
-  const size_t window = size_t(2 * stuck_steps_);
+  const size_t window = size_t(pacing_steps());
   const bool pacing =
       has_path && trail.size() > window && core::Distance(trail[trail.size() - window], now) < step_length_;
   return (has_path && moved < 0.1 * step_length_) || no_way || pacing;

@@ -70,6 +70,8 @@ class StuckMonitor {
                  double moved) const;
   // Records agent's step; true when it is due for a nudge (its count restarts).
   bool Record(int agent, bool no_headway);
+  // The pacing window of NoHeadway, in steps: 2 * stuck_steps.
+  int pacing_steps() const { return 2 * stuck_steps_; }
 
  private:
   std::vector<int> still_;
@@ -84,9 +86,10 @@ class StuckMonitor {
 bool PacedForthAndBack(const std::vector<core::Vec2>& trail, const core::Vec2& now, double step_length);
 
 // True if the last 'steps' entries of 'trail' and 'now' (which may repeat trail.back()) all lie within 'span' of
-// each other, a distance equal to 'span' included (false while the trail is shorter).  An agent whose plan flips between two ways each time the map is
-// sampled again walks a loop a step or two across, forth, back and pressing, with steps that make headway in
-// between, so neither StuckMonitor::NoHeadway nor PacedForthAndBack counts enough of them in a row.
+// each other, a distance equal to 'span' included (false while the trail is shorter).  An agent whose plan
+// flips between two ways each time the map is sampled again walks a loop a step or two across, forth, back and
+// pressing, with steps that make headway in between, so neither StuckMonitor::NoHeadway nor PacedForthAndBack
+// counts enough of them in a row.
 bool HeldInPlace(const std::vector<core::Vec2>& trail, const core::Vec2& now, int steps, double span);
 
 }  // namespace toponav::planning

@@ -53,6 +53,18 @@ TEST(MotionBlocks, BlockPutsOneAcrossTheWayTowardAPointAndNoneWhereThePointsCoin
   EXPECT_EQ(blocks.blocks().size(), 1u);
 }
 
+TEST(MotionBlocks, ClearTakesTheBlocksBackAndTheHistoryKeepsThem) {
+  MotionBlocks blocks(1, 3, 2.0, 4.0, 2.0);
+  ASSERT_TRUE(blocks.Block({10, 10}, {10, 30}));
+  blocks.Clear();
+  EXPECT_TRUE(blocks.blocks().empty());
+  ASSERT_TRUE(blocks.Block({10, 10}, {30, 10}));
+  EXPECT_EQ(blocks.blocks().size(), 1u);
+  ASSERT_EQ(blocks.added().size(), 2u) << "every block ever added, the one taken back too";
+  EXPECT_NEAR(blocks.added()[0].a.y, 12.0, 1e-9);
+  EXPECT_NEAR(blocks.added()[1].a.x, 12.0, 1e-9);
+}
+
 TEST(MotionBlocks, PlannersGoRoundABlock) {
   mapping::MapView view;
   view.known_space.push_back({core::Ring{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {}});
