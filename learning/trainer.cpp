@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "core/detection.h"
 #include "core/error.h"
 #include "core/geometry.h"
 #include "core/rng.h"
@@ -27,6 +28,14 @@ void RollColumns(const std::vector<T>& in, int rows, int cols, int shift, std::v
   for (int row = 0; row < rows; ++row)
     for (int c = 0; c < cols; ++c)
       (*out)[size_t(row) * size_t(cols) + size_t((c + shift) % cols)] = in[size_t(row) * size_t(cols) + size_t(c)];
+}
+
+// Mirrors a row-major rows x cols grid of values in bearing: column c to column (cols - c) % cols.
+template <class T>
+void MirrorColumns(const std::vector<T>& in, int rows, int cols, std::vector<T>* out) {
+  for (int row = 0; row < rows; ++row)
+    for (int c = 0; c < cols; ++c)
+      (*out)[size_t(row) * size_t(cols) + size_t((cols - c) % cols)] = in[size_t(row) * size_t(cols) + size_t(c)];
 }
 
 }  // namespace
@@ -75,19 +84,56 @@ TrainingExample Rolled(const TrainingExample& e, int cols) {
   return r;
 }
 
+TrainingExample Mirrored(const TrainingExample& e) {
+  TrainingExample r = e;
+  const int w = e.image.width;
+  for (int y = 0; y < e.image.height; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int k = 0; k < 3; ++k)
+        r.image.rgb[3 * (size_t(y) * w + size_t((w - x) % w)) + size_t(k)] =
+            e.image.rgb[3 * (size_t(y) * w + size_t(x)) + size_t(k)];
+  const auto& g = e.labels.grid;
+  MirrorColumns(e.labels.cells, g.rows, g.cols, &r.labels.cells);
+  const auto swap_gaps = [](uint8_t v) -> uint8_t {
+    const uint8_t right = 1 + uint8_t(core::VertexLabel::kRightGap), left = 1 + uint8_t(core::VertexLabel::kLeftGap);
+    return v == right ? left : v == left ? right : v;
+  };
+  for (auto& v : r.labels.cells) v = swap_gaps(v);
+  r.goal.bearing = core::WrapAngle(-e.goal.bearing);
+  if (e.subgoal) {
+    const auto& sg = e.subgoal->grid;
+    MirrorColumns(e.subgoal->mask, sg.rows, sg.cols, &r.subgoal->mask);
+    MirrorColumns(e.subgoal->ps, sg.rows, sg.cols, &r.subgoal->ps);
+    MirrorColumns(e.subgoal->delta_success, sg.rows, sg.cols, &r.subgoal->delta_success);
+    MirrorColumns(e.subgoal->exploration, sg.rows, sg.cols, &r.subgoal->exploration);
+  }
+  return r;
+}
+
 namespace {
 
+// One example of a batch: which, turned by how many label columns, and whether mirrored first.
+struct Draw {
+  size_t index = 0;
+  int cols = 0;
+  bool mirror = false;
+};
+
 // The training examples of step 'step': epochs are shuffled orders of all examples (a pure function of the
-// seed and the epoch), each example rolled by its own random amount.
+// seed and the epoch), each example rolled by its own random amount and, with 'mirror', mirrored with
+// probability one half.
 class BatchOrder {
  public:
-  BatchOrder(size_t n, int batch, int seed) : n_(n), batch_(batch), seed_(uint64_t(seed)) {}
-  std::vector<std::pair<size_t, int>> Batch(int step) {
-    std::vector<std::pair<size_t, int>> out;
+  BatchOrder(size_t n, int batch, int seed, bool mirror)
+      : n_(n), batch_(batch), seed_(uint64_t(seed)), mirror_(mirror) {}
+  std::vector<Draw> Batch(int step) {
+    std::vector<Draw> out;
     for (int k = 0; k < batch_; ++k) {
       const uint64_t g = uint64_t(step) * uint64_t(batch_) + uint64_t(k), epoch = g / n_;
       core::Rng roll(core::DeriveSeed(seed_ + 1, g));
-      out.push_back({Order(epoch)[size_t(g % n_)], roll.UniformInt(0, 127)});
+      Draw d{Order(epoch)[size_t(g % n_)], roll.UniformInt(0, 127)};
+      d.mirror = mirror_ && roll.UniformInt(0, 1) == 1;
+      out.push_back(d);
     }
     return out;
   }
@@ -106,6 +152,7 @@ class BatchOrder {
   size_t n_;
   int batch_;
   uint64_t seed_;
+  bool mirror_;
   std::map<uint64_t, std::vector<size_t>> orders_;
 };
 
@@ -128,9 +175,11 @@ double ValidationLoss(const VertexModel& model, const std::vector<TrainingExampl
 // What makes two runs the same run (the step count, the decay and the validation cadence may change: a run can
 // be extended).
 json OptionsJson(const TrainOptions& o) {
-  return {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate},
-          {"seed", o.seed},   {"subgoal", o.subgoal},       {"init_from", o.init_from},
-          {"vertex_weight", o.vertex_weight}};
+  json j = {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate},
+            {"seed", o.seed},   {"subgoal", o.subgoal},       {"init_from", o.init_from},
+            {"vertex_weight", o.vertex_weight}};
+  if (o.mirror) j["mirror"] = true;  // only when on, so runs from before the option still resume
+  return j;
 }
 
 void WriteJsonAtomically(const fs::path& path, const json& j) {
@@ -238,14 +287,15 @@ TrainResult Train(const TrainingSet& data, const TrainOptions& o, const std::str
   r.resumed_from = s.step;
   r.train_samples = int(train.size());
   r.val_samples = int(val.size());
-  BatchOrder order(train.size(), o.batch_size, o.seed);
+  BatchOrder order(train.size(), o.batch_size, o.seed, o.mirror);
   std::ofstream log(dir / "train_log.csv", std::ios::app);
   if (s.step == 0) log << "step,train_loss,val_loss\n";
   double loss_sum = 0;
   int loss_count = 0;
   for (int step = s.step; step < o.steps; ++step) {
     std::vector<TrainingExample> rolled;
-    for (const auto& [i, cols] : order.Batch(step)) rolled.push_back(Rolled(train[i], cols));
+    for (const Draw& d : order.Batch(step))
+      rolled.push_back(Rolled(d.mirror ? Mirrored(train[d.index]) : train[d.index], d.cols));
     std::vector<LabelledImage> batch;
     for (const auto& e : rolled) batch.push_back(Labelled(e));
     loss_sum += model.TrainStep(batch, o.LearningRate(step));

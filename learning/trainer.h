@@ -1,12 +1,12 @@
 #pragma once
 // Training the vertex network (`toponav train`): examples are kept in memory (the vertex sensor's are rendered
 // from the training and validation worlds of sim/training_data.h; the subgoal network's come from the caller,
-// with their goals and subgoal labels), batches are drawn in a shuffled order that is a pure
-// function of the seed and the step, with a random circular roll in bearing (the image by 4 columns per
-// label column, so labels stay exact).  Progress with loss and ETA; validation every validate_every steps;
-// a rolled example's goal turns with it and its subgoal labels by 8 columns (the 64x256 grid).
-// The best model on validation is DIR/model.pt (with its metadata); DIR/checkpoint.pt and DIR/train_state.json
-// let a killed run resume at its last checkpoint (Adam's moments restart there).
+// with their goals and subgoal labels), batches are drawn in a shuffled order that is a pure function of the
+// seed and the step, with a random circular roll in bearing (the image by 4 columns per label column, so labels
+// stay exact) and, with train.mirror, a mirror image half of the time.  A rolled example's goal turns with it
+// and its subgoal labels by 8 columns (the 64x256 grid).  Progress with loss and ETA; validation every
+// validate_every steps.  The best model on validation is DIR/model.pt (with its metadata); DIR/checkpoint.pt
+// and DIR/train_state.json let a killed run resume at its last checkpoint (Adam's moments restart there).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -31,6 +31,11 @@ struct TrainingExample {
 // The example turned by 'cols' label columns: the image by 4 columns each, the subgoal labels by 2, the goal's
 // bearing by 'cols' label columns' worth (bearing stays exact).
 TrainingExample Rolled(const TrainingExample& example, int cols);
+
+// The example mirrored in bearing (a bearing b goes to -b: the world seen in a mirror along the heading): the
+// image's and the grids' columns c to (width - c) % width, right-gap and left-gap labels swapped, the goal's
+// bearing negated.  Mirrored twice, an example is itself.
+TrainingExample Mirrored(const TrainingExample& example);
 
 // Examples to train on and to validate with, and what they are (JSON: written into the model's notes; a
 // resumed run must have the same).

@@ -123,9 +123,10 @@ int RunTrain(const TrainArgs& a) {
                 : fmt::format("{} training and {} validation worlds of {} kinds, {} samples each",
                               cfg.datagen.train_num_seeds, cfg.datagen.val_num_seeds, cfg.datagen.kinds.size(),
                               cfg.datagen.samples_per_world);
-  fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}{}; data: {} -> {}\n", t.width,
-             t.batch_size, t.steps, t.learning_rate, t.validate_every,
-             t.init_from.empty() ? "" : ", starting from " + t.init_from, data, a.out);
+  fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}{}{}; data: {} -> {}\n",
+             t.width, t.batch_size, t.steps, t.learning_rate, t.validate_every,
+             t.init_from.empty() ? "" : ", starting from " + t.init_from, t.mirror ? ", half mirrored" : "", data,
+             a.out);
   std::fflush(stdout);
   auto report = [&](const learning::TrainProgress& p) {
     if (p.step % 50 == 0) PurgeFreedPages();

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
+#include "core/detection.h"
 #include "core/error.h"
+#include "sim/render.h"
 #include "sim/worlds.h"
 #include "tests/learning/rendered_examples.h"
 
@@ -59,16 +63,23 @@ TEST(Trainer, AKilledRunResumesFromItsCheckpointAndKeepsTheBestModel) {
   fs::remove_all(dir);
 }
 
-TEST(Trainer, ARolledExampleTurnsItsImageVertexLabelsGoalAndSubgoalLabelsTogether) {
+// A black panorama with one white pixel (row 5, column 40: label column 10), a vertex labelled 'cell' in label
+// row 3, column 10, the goal 50 away along that column, and the subgoal band.
+TrainingExample OneVertexExample(uint8_t cell) {
   TrainingExample e;
   e.image.width = 512;
   e.image.height = 128;
   e.image.rgb.assign(size_t(3 * 512 * 128), 0);
-  e.image.rgb[3 * (5 * 512 + 40)] = 255;  // row 5, column 40 (label column 10)
+  e.image.rgb[3 * (5 * 512 + 40)] = 255;
   e.labels.cells.assign(e.labels.grid.size(), 0);
-  e.labels.cells[e.labels.grid.Index(3, 10)] = 2;
+  e.labels.cells[e.labels.grid.Index(3, 10)] = cell;
   e.goal = {50.0, e.labels.grid.ColBearing(10)};
   e.subgoal = testing::SubgoalBand();
+  return e;
+}
+
+TEST(Trainer, ARolledExampleTurnsItsImageVertexLabelsGoalAndSubgoalLabelsTogether) {
+  TrainingExample e = OneVertexExample(2);
   e.subgoal->mask.assign(e.subgoal->grid.size(), 0);
   e.subgoal->mask[e.subgoal->grid.Index(7, 20)] = 1;
   e.subgoal->ps[e.subgoal->grid.Index(7, 20)] = 0.5f;
@@ -83,6 +94,76 @@ TEST(Trainer, ARolledExampleTurnsItsImageVertexLabelsGoalAndSubgoalLabelsTogethe
     EXPECT_EQ(r.subgoal->ps[r.subgoal->grid.Index(7, 2 * col)], 0.5f) << k;
     EXPECT_EQ(r.subgoal->mask[r.subgoal->grid.Index(7, 20)], 0) << k;
   }
+}
+
+TEST(Trainer, AMirroredExampleNegatesBearingsSwapsGapLabelsAndMirroredTwiceIsItself) {
+  TrainingExample e = OneVertexExample(1 + uint8_t(core::VertexLabel::kRightGap));
+  e.labels.cells[e.labels.grid.Index(4, 0)] = 1 + uint8_t(core::VertexLabel::kCorner);
+  const TrainingExample m = Mirrored(e);
+  EXPECT_EQ(m.image.rgb[3 * (5 * 512 + 512 - 40)], 255);
+  EXPECT_EQ(m.image.rgb[3 * (5 * 512 + 40)], 0);
+  EXPECT_EQ(m.labels.cells[m.labels.grid.Index(3, 128 - 10)], 1 + uint8_t(core::VertexLabel::kLeftGap));
+  EXPECT_EQ(m.labels.cells[m.labels.grid.Index(4, 0)], 1 + uint8_t(core::VertexLabel::kCorner))
+      << "the column behind the agent (bearing pi) stays";
+  EXPECT_NEAR(m.goal.bearing, -e.goal.bearing, 1e-12);
+  EXPECT_EQ(m.labels.grid.BearingCol(m.goal.bearing), 128 - 10) << "the goal turns with the image";
+  // The band's left half (columns below 128 lead to the goal) is now the right half, column 0 staying.
+  EXPECT_EQ(m.subgoal->ps[m.subgoal->grid.Index(10, 0)], 1.0f);
+  EXPECT_EQ(m.subgoal->ps[m.subgoal->grid.Index(10, 1)], 0.0f);
+  EXPECT_EQ(m.subgoal->ps[m.subgoal->grid.Index(10, 255)], 1.0f);
+  EXPECT_EQ(m.subgoal->exploration[m.subgoal->grid.Index(10, 200)], 0.0f);
+  const TrainingExample back = Mirrored(m);
+  EXPECT_EQ(back.image.rgb, e.image.rgb);
+  EXPECT_EQ(back.labels.cells, e.labels.cells);
+  EXPECT_EQ(back.subgoal->ps, e.subgoal->ps);
+  EXPECT_EQ(back.subgoal->exploration, e.subgoal->exploration);
+  EXPECT_NEAR(back.goal.bearing, e.goal.bearing, 1e-12);
+}
+
+// The world seen in a mirror: y -> -y (rings reversed to keep their orientation), the start's heading negated.
+core::World Reflected(core::World w) {
+  const auto flip = [](core::Ring* ring) {
+    for (auto& p : *ring) p.y = -p.y;
+    std::reverse(ring->begin(), ring->end());
+  };
+  flip(&w.boundary);
+  for (auto& o : w.obstacles) flip(&o);
+  for (auto& c : w.clutter) {
+    c.center.y = -c.center.y;
+    c.yaw = -c.yaw;
+  }
+  w.bounds = {{w.bounds.min.x, -w.bounds.max.y}, {w.bounds.max.x, -w.bounds.min.y}};
+  w.start = {w.start.x, -w.start.y, -w.start.yaw};
+  w.goal.y = -w.goal.y;
+  return w;
+}
+
+// A panorama whose pixels hold the depth the renderer saw there (in whole units, at most 255): the scene's
+// layout without its textures, which run the other way in a mirror.
+core::Panorama DepthPicture(const core::World& w, const core::Pose2& pose) {
+  core::Panorama p = sim::Renderer(w, {}).Render(pose, sim::kRenderDepth);
+  p.rgb.assign(p.depth.size() * 3, 0);
+  for (size_t i = 0; i < p.depth.size(); ++i) p.rgb[3 * i] = uint8_t(std::min(255.0f, p.depth[i]));
+  return p;
+}
+
+TEST(Trainer, AMirroredExampleHasTheLabelsAndThePanoramaOfTheWorldInAMirror) {
+  const core::World world = sim::GenerateWorld(core::WorldKind::kLabyrinth, {}, 3);
+  const core::World reflected = Reflected(world);
+  const testing::Rendered seen = testing::RenderAtStart(world, {0.7});
+  const testing::Rendered mirror = testing::RenderAtStart(reflected, {-0.7});
+  const TrainingExample e{DepthPicture(world, seen.poses[0]), seen.labels[0], {}, std::nullopt};
+  const TrainingExample m = Mirrored(e);
+  ASSERT_GT(e.labels.num_vertices(), 3);
+  EXPECT_EQ(m.labels.cells, mirror.labels[0].cells);
+  const core::Panorama want = DepthPicture(reflected, mirror.poses[0]);
+  int off = 0, changed = 0;
+  for (size_t i = 0; i < want.rgb.size(); i += 3) {
+    off += std::abs(int(m.image.rgb[i]) - int(want.rgb[i])) > 2;
+    changed += std::abs(int(e.image.rgb[i]) - int(want.rgb[i])) > 2;
+  }
+  EXPECT_LT(off, int(want.rgb.size() / 3 / 1000)) << "pixels more than 2 units off in depth";
+  EXPECT_GT(changed, 20 * off) << "the unmirrored panorama is not the mirror world's";
 }
 
 TEST(Trainer, TrainsTheSubgoalNetworkFromAVertexModelOnExamplesGivenInMemoryWithTheVertexWeightAsked) {
