@@ -118,18 +118,30 @@ TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
   EXPECT_TRUE(estimated) << "every frontier kept the optimistic default";
 }
 
-// A trial of configs/maze/'config' in tuning maze 'seed'.
-NavigationResult RunMaze(const std::string& config, uint64_t seed, GoalPlanner planner, int max_steps) {
-  const Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/" + config);
+// A trial of 'cfg' in tuning maze 'seed'.
+NavigationResult RunMaze(const Config& cfg, uint64_t seed, GoalPlanner planner, int max_steps) {
   NavigationTrialOptions o;
   o.planner = planner;
   o.max_steps = max_steps;
   return RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, seed), cfg, o, seed);
 }
 
+// A trial of configs/maze/'config' in tuning maze 'seed'.
+NavigationResult RunMaze(const std::string& config, uint64_t seed, GoalPlanner planner, int max_steps) {
+  return RunMaze(LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/" + config), seed, planner, max_steps);
+}
+
 // A trial of the maze benchmark's config (the learned sensor).
 NavigationResult RunPaperMaze(uint64_t seed, GoalPlanner planner, int max_steps) {
   return RunMaze("paper.yaml", seed, planner, max_steps);
+}
+
+// The maze benchmark's config with the LSP recipe's first-stage network (models/lsp_net_cpu_first_stage.pt),
+// whose maps showed the cases the tests using it replay (the committed second stage's do not).
+Config FirstStageMazeConfig() {
+  Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
+  cfg.sensor.learned.model = TOPONAV_SOURCE_DIR "/models/lsp_net_cpu_first_stage.pt";
+  return cfg;
 }
 
 TEST(NavigationTrial, TheMazeConfigLeavesASideOpeningSeenFromDownTheCorridorOpen) {
@@ -187,8 +199,8 @@ TEST(NavigationTrial, AnAgentPacingForthAndBackAtAWallTheMapLacksIsNudgedAndBloc
   // piece's frontier stands for, and the way to it paces the agent 1.7 units forward and 1.5 back at the
   // wall's corner; every forward step makes headway.  Counted as no headway, the pacing gets the agent nudged,
   // and with no frontier near to give up, a motion block goes across its way.  Without the pacing test the run
-  // ends "stuck" after 319 steps, without the block after 463.
-  const NavigationResult r = RunPaperMaze(7071, GoalPlanner::kOptimistic, 560);  // the goal after 532 steps
+  // ends "stuck" after 319 steps, without the block after 463.  (The first-stage network's maps.)
+  const NavigationResult r = RunMaze(FirstStageMazeConfig(), 7071, GoalPlanner::kOptimistic, 560);  // goal: 532 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
   EXPECT_FALSE(r.blocks.empty()) << "the trial's result lists the motion blocks it added (its picture draws them)";
 }
@@ -207,8 +219,9 @@ TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) 
   // Tuning maze 7249, the oracle: a corner detected past the end of the column's side wall, seen edge-on, was
   // joined to the wall's far end, and the wall drawn along the side wall and across the opening beyond its end
   // closed the only way to the goal (every frontier's true Ps 0; the run ended at the 600-step cap).  The
-  // maze configs draw only the shorter wall (mapping.wall_past_vertex_tolerance).
-  Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
+  // maze configs draw only the shorter wall (mapping.wall_past_vertex_tolerance).  (The first-stage network's
+  // maps.)
+  Config cfg = FirstStageMazeConfig();
   ASSERT_GT(cfg.mapping.wall_past_vertex_tolerance, 0.0);
   const core::World world = sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7249);
   NavigationTrialOptions o;
