@@ -22,7 +22,7 @@ struct TrainOptions {
   int seed = 0;                 // initial weights and batch order
   double vertex_weight = 500.0;  // the vertex BCE's weight in the loss (vertexnav.md §4.4: 500); with subgoal,
                                  // the subgoal terms weigh 1 against it
-  bool mirror = false;       // mirror half the training examples in bearing (learning::Mirrored)
+  bool mirror = false;       // mirror each training example in bearing with probability 1/2 (learning::Mirrored)
   bool subgoal = false;      // train the LSP extension (goal input, subgoal outputs) on subgoal examples
   std::string init_from;     // a model file whose weights start a fresh run where names and shapes match
                              // (a vertex model starts a subgoal one: all but the goal's and the finer

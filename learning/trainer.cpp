@@ -22,20 +22,32 @@ using nlohmann::json;
 
 namespace {
 
-// Rolls a row-major rows x cols grid of values by 'shift' columns.
-template <class T>
-void RollColumns(const std::vector<T>& in, int rows, int cols, int shift, std::vector<T>* out) {
+// Moves column c of a row-major rows x cols grid of 'channels' values a cell to column to(c, cols).
+template <class T, class To>
+void MoveColumns(const std::vector<T>& in, int rows, int cols, size_t channels, const To& to, std::vector<T>* out) {
   for (int row = 0; row < rows; ++row)
-    for (int c = 0; c < cols; ++c)
-      (*out)[size_t(row) * size_t(cols) + size_t((c + shift) % cols)] = in[size_t(row) * size_t(cols) + size_t(c)];
+    for (int c = 0; c < cols; ++c) {
+      const size_t from = size_t(row) * size_t(cols) + size_t(c);
+      const size_t dest = size_t(row) * size_t(cols) + size_t(to(c, cols));
+      for (size_t k = 0; k < channels; ++k) (*out)[dest * channels + k] = in[from * channels + k];
+    }
 }
 
-// Mirrors a row-major rows x cols grid of values in bearing: column c to column (cols - c) % cols.
-template <class T>
-void MirrorColumns(const std::vector<T>& in, int rows, int cols, std::vector<T>* out) {
-  for (int row = 0; row < rows; ++row)
-    for (int c = 0; c < cols; ++c)
-      (*out)[size_t(row) * size_t(cols) + size_t((cols - c) % cols)] = in[size_t(row) * size_t(cols) + size_t(c)];
+// The example with column c of each of its grids (the image, the vertex labels, the subgoal labels) moved to
+// column to(c, the grid's width); the label values and the goal as they were.
+template <class To>
+TrainingExample ColumnsMoved(const TrainingExample& e, const To& to) {
+  TrainingExample r = e;
+  MoveColumns(e.image.rgb, e.image.height, e.image.width, 3, to, &r.image.rgb);
+  MoveColumns(e.labels.cells, e.labels.grid.rows, e.labels.grid.cols, 1, to, &r.labels.cells);
+  if (e.subgoal) {
+    const auto& sg = e.subgoal->grid;
+    MoveColumns(e.subgoal->mask, sg.rows, sg.cols, 1, to, &r.subgoal->mask);
+    for (auto field : {&core::SubgoalLabelGrid::ps, &core::SubgoalLabelGrid::delta_success,
+                       &core::SubgoalLabelGrid::exploration})
+      MoveColumns((*e.subgoal).*field, sg.rows, sg.cols, 1, to, &((*r.subgoal).*field));
+  }
+  return r;
 }
 
 }  // namespace
@@ -63,50 +75,17 @@ TrainingSet RenderVertexExamples(const sim::DatagenOptions& data, const sim::Wor
 }
 
 TrainingExample Rolled(const TrainingExample& e, int cols) {
-  TrainingExample r = e;
-  const auto& g = e.labels.grid;
-  const int w = e.image.width, scale = w / g.cols;
-  for (int y = 0; y < e.image.height; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int k = 0; k < 3; ++k)
-        r.image.rgb[3 * (size_t(y) * w + size_t((x + cols * scale) % w)) + size_t(k)] =
-            e.image.rgb[3 * (size_t(y) * w + size_t(x)) + size_t(k)];
-  RollColumns(e.labels.cells, g.rows, g.cols, cols, &r.labels.cells);
-  r.goal.bearing = core::WrapAngle(e.goal.bearing + cols * 2.0 * M_PI / g.cols);
-  if (e.subgoal) {
-    const auto& sg = e.subgoal->grid;
-    const int shift = cols * sg.cols / g.cols;
-    RollColumns(e.subgoal->mask, sg.rows, sg.cols, shift, &r.subgoal->mask);
-    RollColumns(e.subgoal->ps, sg.rows, sg.cols, shift, &r.subgoal->ps);
-    RollColumns(e.subgoal->delta_success, sg.rows, sg.cols, shift, &r.subgoal->delta_success);
-    RollColumns(e.subgoal->exploration, sg.rows, sg.cols, shift, &r.subgoal->exploration);
-  }
+  const int label_cols = e.labels.grid.cols;
+  TrainingExample r = ColumnsMoved(e, [&](int c, int width) { return (c + cols * width / label_cols) % width; });
+  r.goal.bearing = core::WrapAngle(e.goal.bearing + cols * 2.0 * M_PI / label_cols);
   return r;
 }
 
 TrainingExample Mirrored(const TrainingExample& e) {
-  TrainingExample r = e;
-  const int w = e.image.width;
-  for (int y = 0; y < e.image.height; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int k = 0; k < 3; ++k)
-        r.image.rgb[3 * (size_t(y) * w + size_t((w - x) % w)) + size_t(k)] =
-            e.image.rgb[3 * (size_t(y) * w + size_t(x)) + size_t(k)];
-  const auto& g = e.labels.grid;
-  MirrorColumns(e.labels.cells, g.rows, g.cols, &r.labels.cells);
-  const auto swap_gaps = [](uint8_t v) -> uint8_t {
-    const uint8_t right = 1 + uint8_t(core::VertexLabel::kRightGap), left = 1 + uint8_t(core::VertexLabel::kLeftGap);
-    return v == right ? left : v == left ? right : v;
-  };
-  for (auto& v : r.labels.cells) v = swap_gaps(v);
+  TrainingExample r = ColumnsMoved(e, [](int c, int width) { return (width - c) % width; });
+  const uint8_t right = 1 + uint8_t(core::VertexLabel::kRightGap), left = 1 + uint8_t(core::VertexLabel::kLeftGap);
+  for (auto& v : r.labels.cells) v = v == right ? left : v == left ? right : v;
   r.goal.bearing = core::WrapAngle(-e.goal.bearing);
-  if (e.subgoal) {
-    const auto& sg = e.subgoal->grid;
-    MirrorColumns(e.subgoal->mask, sg.rows, sg.cols, &r.subgoal->mask);
-    MirrorColumns(e.subgoal->ps, sg.rows, sg.cols, &r.subgoal->ps);
-    MirrorColumns(e.subgoal->delta_success, sg.rows, sg.cols, &r.subgoal->delta_success);
-    MirrorColumns(e.subgoal->exploration, sg.rows, sg.cols, &r.subgoal->exploration);
-  }
   return r;
 }
 
@@ -178,7 +157,7 @@ json OptionsJson(const TrainOptions& o) {
   json j = {{"width", o.width}, {"batch_size", o.batch_size}, {"learning_rate", o.learning_rate},
             {"seed", o.seed},   {"subgoal", o.subgoal},       {"init_from", o.init_from},
             {"vertex_weight", o.vertex_weight}};
-  if (o.mirror) j["mirror"] = true;  // only when on, so runs from before the option still resume
+  if (o.mirror) j["mirror"] = true;  // absent when off: a run without mirroring keeps its identity
   return j;
 }
 

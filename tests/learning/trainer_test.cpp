@@ -99,6 +99,7 @@ TEST(Trainer, ARolledExampleTurnsItsImageVertexLabelsGoalAndSubgoalLabelsTogethe
 TEST(Trainer, AMirroredExampleNegatesBearingsSwapsGapLabelsAndMirroredTwiceIsItself) {
   TrainingExample e = OneVertexExample(1 + uint8_t(core::VertexLabel::kRightGap));
   e.labels.cells[e.labels.grid.Index(4, 0)] = 1 + uint8_t(core::VertexLabel::kCorner);
+  for (int col = 100; col < 256; ++col) e.subgoal->mask[e.subgoal->grid.Index(10, col)] = 0;
   const TrainingExample m = Mirrored(e);
   EXPECT_EQ(m.image.rgb[3 * (5 * 512 + 512 - 40)], 255);
   EXPECT_EQ(m.image.rgb[3 * (5 * 512 + 40)], 0);
@@ -112,11 +113,17 @@ TEST(Trainer, AMirroredExampleNegatesBearingsSwapsGapLabelsAndMirroredTwiceIsIts
   EXPECT_EQ(m.subgoal->ps[m.subgoal->grid.Index(10, 1)], 0.0f);
   EXPECT_EQ(m.subgoal->ps[m.subgoal->grid.Index(10, 255)], 1.0f);
   EXPECT_EQ(m.subgoal->exploration[m.subgoal->grid.Index(10, 200)], 0.0f);
+  EXPECT_EQ(m.subgoal->delta_success[m.subgoal->grid.Index(10, 200)], 30.0f);
+  EXPECT_EQ(m.subgoal->delta_success[m.subgoal->grid.Index(10, 100)], 0.0f);
+  EXPECT_EQ(m.subgoal->mask[m.subgoal->grid.Index(10, 200)], 1) << "the mask covered columns 0-99";
+  EXPECT_EQ(m.subgoal->mask[m.subgoal->grid.Index(10, 100)], 0);
   const TrainingExample back = Mirrored(m);
   EXPECT_EQ(back.image.rgb, e.image.rgb);
   EXPECT_EQ(back.labels.cells, e.labels.cells);
   EXPECT_EQ(back.subgoal->ps, e.subgoal->ps);
   EXPECT_EQ(back.subgoal->exploration, e.subgoal->exploration);
+  EXPECT_EQ(back.subgoal->mask, e.subgoal->mask);
+  EXPECT_EQ(back.subgoal->delta_success, e.subgoal->delta_success);
   EXPECT_NEAR(back.goal.bearing, e.goal.bearing, 1e-12);
 }
 
