@@ -125,8 +125,8 @@ int RunTrain(const TrainArgs& a) {
                               cfg.datagen.samples_per_world);
   fmt::print("toponav train: width {}, batch {}, {} steps (lr {}), validation every {}{}{}; data: {} -> {}\n",
              t.width, t.batch_size, t.steps, t.learning_rate, t.validate_every,
-             t.init_from.empty() ? "" : ", starting from " + t.init_from, t.mirror ? ", half mirrored" : "", data,
-             a.out);
+             t.init_from.empty() ? "" : ", starting from " + t.init_from,
+             t.mirror ? ", each example mirrored at random" : "", data, a.out);
   std::fflush(stdout);
   auto report = [&](const learning::TrainProgress& p) {
     if (p.step % 50 == 0) PurgeFreedPages();
