@@ -72,7 +72,10 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // Where the map cuts the goal off (a goal-directed trial's goal is reachable: some wall of the map is false),
 // Recover() tries in turn a way through a doorway hypothesis (planning/doorways.h), the blocked frontiers and
 // motion blocks taken back, and a frontier or a suspected false wall to look at from close by
-// (planning::SuspectInspector); the trial ends "cut_off" only when none is left for cut_off_steps steps.
+// (planning::SuspectInspector); the trial ends "cut_off" only when none is left for cut_off_steps steps.  Where
+// the agent stands at the place the inspector leads it to, the map walls within inspect_reach of it become
+// openings (planning::OpeningsNear) that later doorway searches try too, until the agent makes no headway
+// through one.
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -85,7 +88,8 @@ class NavigationPolicy : public AgentPolicy {
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
-        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
+        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach),
+        step_length_(MotionFor(config, world).step_length) {}
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();
@@ -160,7 +164,18 @@ class NavigationPolicy : public AgentPolicy {
       if (blocks_) blocks_->Clear();
       return c;
     }
-    return inspector_.Choose(map, graph, at, goal_, targets);
+    c = inspector_.Choose(map, graph, at, goal_, targets);
+    if (c.status != planning::PlanStatus::kFound || c.path.cost >= 0.5 * step_length_) return c;
+    // The agent stands where recovery leads it: the walls beside it become openings to try.
+    constexpr double kSame = 4.0;
+    for (const auto& o : planning::OpeningsNear(view, map.walls.size(), at, options_.inspect_reach,
+                                                options_.doorway_min_width)) {
+      bool known = false;
+      for (const auto& k : openings_) known = known || core::Distance(k.middle(), o.middle()) < kSame;
+      if (!known) openings_.push_back(o);
+    }
+    const planning::FrontierChoice through = ThroughDoorway(view, at);
+    return through.status == planning::PlanStatus::kFound ? through : c;
   }
 
   // The frontiers' targets on their parts the agent was not stuck at (GivenUpFrontiers::Unprobed); the
@@ -172,12 +187,15 @@ class NavigationPolicy : public AgentPolicy {
     return planning::FrontierTargets(cut, planning_);
   }
 
-  // The way to the goal through the doorway hypothesis (not yet failed) that makes it cheapest.
+  // The way to the goal through the doorway hypothesis or the opening (not yet failed) that makes it cheapest.
   planning::FrontierChoice ThroughDoorway(const mapping::MapView& view, const Vec2& at) {
     constexpr double kOnWall = 2.0, kSame = 4.0;
     planning::FrontierChoice best;
     const double min_width = options_.doorway_min_width, max_width = options_.doorway_max_width;
-    for (const auto& d : planning::DoorwayHypotheses(view, kOnWall, min_width, max_width)) {
+    std::vector<planning::Doorway> doorways = planning::DoorwayHypotheses(view, kOnWall, min_width, max_width);
+    for (const auto& o : openings_)
+      if (const auto d = planning::Anchored(view, o, kOnWall / 2)) doorways.push_back(*d);
+    for (const auto& d : doorways) {
       bool failed = false;
       for (const auto& f : failed_doorways_) failed = failed || core::Distance(f, d.middle()) < kSame;
       if (failed) continue;
@@ -210,6 +228,8 @@ class NavigationPolicy : public AgentPolicy {
   planning::SuspectInspector inspector_;
   std::optional<Vec2> doorway_;        // the middle of the doorway hypothesis the agent heads through now
   std::vector<Vec2> failed_doorways_;  // middles of those it made no headway through
+  std::vector<planning::Doorway> openings_;  // walls beside a place recovery led to, opened (OpeningsNear)
+  double step_length_;
   planning::FrontierChoice choice_;
   std::map<int, double> estimates_;
   int cut_off_ = 0, nudges_ = 0;

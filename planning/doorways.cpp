@@ -36,6 +36,31 @@ std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tole
   return out;
 }
 
+std::vector<Doorway> OpeningsNear(const mapping::MapView& view, size_t num_walls, const Vec2& at, double reach,
+                                  double width) {
+  std::vector<Doorway> out;
+  for (size_t w = 0; w < std::min(num_walls, view.walls.size()); ++w) {
+    const auto& wall = view.walls[w];
+    const double length = core::Distance(wall.pa, wall.pb);
+    if (length <= 0 || core::DistanceToSegment(at, {wall.pa, wall.pb}) > reach) continue;
+    const Vec2 u = (wall.pb - wall.pa) * (1.0 / length);
+    const double half = std::min(width, length) / 2;
+    const double along = (at - wall.pa).x * u.x + (at - wall.pa).y * u.y;
+    const double t = std::clamp(along, half, length - half);
+    out.push_back({wall.pa + u * (t - half), wall.pa + u * (t + half), int(w)});
+  }
+  return out;
+}
+
+std::optional<Doorway> Anchored(const mapping::MapView& view, const Doorway& doorway, double tolerance) {
+  for (size_t w = 0; w < view.walls.size(); ++w) {
+    const core::Segment2 s{view.walls[w].pa, view.walls[w].pb};
+    if (core::DistanceToSegment(doorway.a, s) <= tolerance && core::DistanceToSegment(doorway.b, s) <= tolerance)
+      return Doorway{doorway.a, doorway.b, int(w)};
+  }
+  return std::nullopt;
+}
+
 mapping::MapView WithDoorway(const mapping::MapView& view, const Doorway& doorway) {
   mapping::MapView v = view;
   const mapping::MapWall wall = v.walls.at(size_t(doorway.wall));

@@ -5,6 +5,7 @@
 // corners seen through the opening together.  Where the map seals the goal off, planning through such a
 // doorway and driving up to it decides: through an opening the agent sees the far side from close by; at a
 // true wall it makes no headway and the hypothesis is dropped.
+#include <optional>
 #include <vector>
 
 #include "core/geometry.h"
@@ -23,6 +24,17 @@ struct Doorway {
 // between 'min_width' and 'max_width' apart, with at least one rejected vertex of the two.
 std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tolerance, double min_width,
                                        double max_width);
+
+// Openings 'width' wide (or the whole wall where it is shorter) centred on the point of each of the view's
+// first 'num_walls' walls nearest 'at', for the walls within 'reach' of it: where the map seals the goal off
+// and the agent stands at the place its recovery leads it to, a wall beside it may be one drawn across the way
+// (its evidence from far views, which the near ones do not overturn).
+std::vector<Doorway> OpeningsNear(const mapping::MapView& view, size_t num_walls, const core::Vec2& at,
+                                  double reach, double width);
+
+// The doorway a-b on the view's wall that passes within 'tolerance' of both (the first such), if any: a
+// doorway found on an earlier view, on this one's walls.
+std::optional<Doorway> Anchored(const mapping::MapView& view, const Doorway& doorway, double tolerance);
 
 // The view with the doorway's piece of its wall removed (the jambs become vertices of the two pieces left).
 mapping::MapView WithDoorway(const mapping::MapView& view, const Doorway& doorway);

@@ -233,5 +233,15 @@ TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) 
   EXPECT_FALSE(RunNavigationTrial(world, cfg, o, 7249).reached) << "with both walls drawn the way stays closed";
 }
 
+TEST(NavigationTrial, AnAgentStandingWhereItsRecoveryLedItTriesTheWallBesideItAsAnOpening) {
+  // Tuning maze 8731, optimistic: the goal lies in a pocket 12.6 units past the agent, and a false wall from
+  // a corner beyond the pocket's mouth to one beyond its far side cuts it off (the pocket's far corners
+  // rejected).  Recovery led the agent to a frontier's target in the mouth, where it stood: the frontier never
+  // cleared, each nudge's block was taken back the next step, and the run ended "stuck" after 215 steps.
+  // Standing there, it tries the walls beside it as openings (planning::OpeningsNear) and walks through.
+  const NavigationResult r = RunPaperMaze(8731, GoalPlanner::kOptimistic, 200);  // the goal after 128 steps
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+}
+
 }  // namespace
 }  // namespace toponav::experiments

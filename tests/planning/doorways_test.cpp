@@ -70,5 +70,32 @@ TEST(Doorways, APathLeadsThroughTheDoorwayOutOfASealedRoom) {
   EXPECT_NEAR(p.cost, 50.0, 1.0) << "straight down through the doorway";
 }
 
+TEST(Doorways, TheWallsBesideAnAgentOpenAtTheirNearestPointsWithinTheirEnds) {
+  const auto view = ClosedRoom({});
+  // 3 from the bottom wall, 5 from the left one, 37 from the top: two openings, each 8 wide.
+  const auto near = OpeningsNear(view, view.walls.size(), {5, 3}, 8.0, 8.0);
+  ASSERT_EQ(near.size(), 2u);
+  EXPECT_EQ(near[0].wall, 0);
+  EXPECT_NEAR(near[0].a.x, 1.0, 1e-9) << "centred on the wall's point nearest the agent, (5, 0)";
+  EXPECT_NEAR(near[0].b.x, 9.0, 1e-9);
+  EXPECT_NEAR(near[0].a.y, 0.0, 1e-9);
+  EXPECT_EQ(near[1].wall, 3);
+  EXPECT_NEAR(near[1].middle().y, 4.0, 1e-9) << "moved up from (0, 3) so that the opening stays on the wall";
+  EXPECT_NEAR(core::Distance(near[1].a, near[1].b), 8.0, 1e-9);
+  EXPECT_EQ(OpeningsNear(view, 1, {5, 3}, 8.0, 8.0).size(), 1u) << "only the first walls (the map's own)";
+  EXPECT_TRUE(OpeningsNear(view, view.walls.size(), {30, 20}, 8.0, 8.0).empty()) << "no wall within reach";
+}
+
+TEST(Doorways, AnOpeningIsFoundAgainOnTheWallThatStillRunsThroughItsEnds) {
+  mapping::MapView view = ClosedRoom({});
+  const Doorway opening{{20, 0}, {28, 0}, 0};
+  std::swap(view.walls[0], view.walls[2]);  // the wall's index changed between views
+  const auto again = Anchored(view, opening, 1.0);
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->wall, 2);
+  view.walls[2].pa.y = view.walls[2].pb.y = -3;  // the wall moved away
+  EXPECT_FALSE(Anchored(view, opening, 1.0));
+}
+
 }  // namespace
 }  // namespace toponav::planning
