@@ -74,8 +74,8 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // motion blocks taken back, and a frontier or a suspected false wall to look at from close by
 // (planning::SuspectInspector); the trial ends "cut_off" only when none is left for cut_off_steps steps.  Where
 // the agent stands at the place the inspector leads it to, the map walls within inspect_reach of it become
-// openings (planning::OpeningsNear) that later doorway searches try too, until the agent makes no headway
-// through one.
+// openings (planning::OpeningsNear) that later doorway searches try too, each until the agent makes no
+// headway through it.
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -88,8 +88,7 @@ class NavigationPolicy : public AgentPolicy {
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
-        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach),
-        step_length_(MotionFor(config, world).step_length) {}
+        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();
@@ -112,7 +111,8 @@ class NavigationPolicy : public AgentPolicy {
       for (size_t i = 0; i < d->frontier_ids.size(); ++i) estimates_[d->frontier_ids[i]] = d->properties[i].ps;
     if (on_estimates) on_estimates(estimates_);
     doorway_.reset();
-    if (choice_.status != planning::PlanStatus::kFound) choice_ = Recover(*state.view, view, graph, targets, at);
+    if (choice_.status != planning::PlanStatus::kFound)
+      choice_ = Recover(*state.view, view, graph, targets, at, state.step_length);
     cut_off_ = choice_.status == planning::PlanStatus::kFound ? 0 : cut_off_ + 1;
     if (cut_off_ >= options_.cut_off_steps) return End("cut_off");
     if (choice_.status == planning::PlanStatus::kFound)
@@ -153,11 +153,14 @@ class NavigationPolicy : public AgentPolicy {
  private:
   // Where the planner finds no way to the goal: the cheapest way through a doorway hypothesis; else, if some
   // frontiers were given up or motion blocks added, they are all taken back (no way this step); else a
-  // frontier or a suspected false wall to look at.
+  // frontier or a suspected false wall to look at; where the agent stands at that already, the map walls
+  // beside it become openings (planning::OpeningsNear) for this and later doorway searches.  'map': the
+  // map's view; 'view': it with the walls the policy adds, after the map's own.
   planning::FrontierChoice Recover(const mapping::MapView& map, const mapping::MapView& view,
                                    const planning::VisibilityGraph& graph,
-                                   const std::vector<planning::FrontierTarget>& targets, const Vec2& at) {
-    planning::FrontierChoice c = ThroughDoorway(view, at);
+                                   const std::vector<planning::FrontierTarget>& targets, const Vec2& at,
+                                   double step_length) {
+    planning::FrontierChoice c = ThroughDoorway(view, map.walls.size(), at);
     if (c.status == planning::PlanStatus::kFound) return c;
     if (blocked_.given_up() > 0 || (blocks_ && !blocks_->blocks().empty())) {
       blocked_.Clear();
@@ -165,16 +168,18 @@ class NavigationPolicy : public AgentPolicy {
       return c;
     }
     c = inspector_.Choose(map, graph, at, goal_, targets);
-    if (c.status != planning::PlanStatus::kFound || c.path.cost >= 0.5 * step_length_) return c;
-    // The agent stands where recovery leads it: the walls beside it become openings to try.
-    constexpr double kSame = 4.0;
-    for (const auto& o : planning::OpeningsNear(view, map.walls.size(), at, options_.inspect_reach,
-                                                options_.doorway_min_width)) {
+    if (c.status != planning::PlanStatus::kFound || c.path.cost >= 0.5 * step_length) return c;
+    // An opening overlapping one tried or failed before is not new.
+    const double apart = options_.doorway_min_width;
+    bool added = false;
+    for (const auto& o : planning::OpeningsNear(map, map.walls.size(), at, options_.inspect_reach, apart)) {
       bool known = false;
-      for (const auto& k : openings_) known = known || core::Distance(k.middle(), o.middle()) < kSame;
-      if (!known) openings_.push_back(o);
+      for (const auto& k : openings_) known = known || core::Distance(k.middle(), o.middle()) < apart;
+      for (const auto& f : failed_doorways_) known = known || core::Distance(f, o.middle()) < apart;
+      if (!known) openings_.push_back(o), added = true;
     }
-    const planning::FrontierChoice through = ThroughDoorway(view, at);
+    if (!added) return c;
+    const planning::FrontierChoice through = ThroughDoorway(view, map.walls.size(), at);
     return through.status == planning::PlanStatus::kFound ? through : c;
   }
 
@@ -187,14 +192,15 @@ class NavigationPolicy : public AgentPolicy {
     return planning::FrontierTargets(cut, planning_);
   }
 
-  // The way to the goal through the doorway hypothesis or the opening (not yet failed) that makes it cheapest.
-  planning::FrontierChoice ThroughDoorway(const mapping::MapView& view, const Vec2& at) {
+  // The way to the goal through the doorway hypothesis or the opening (on one of the view's first 'map_walls'
+  // walls; not yet failed) that makes it cheapest.
+  planning::FrontierChoice ThroughDoorway(const mapping::MapView& view, size_t map_walls, const Vec2& at) {
     constexpr double kOnWall = 2.0, kSame = 4.0;
     planning::FrontierChoice best;
     const double min_width = options_.doorway_min_width, max_width = options_.doorway_max_width;
     std::vector<planning::Doorway> doorways = planning::DoorwayHypotheses(view, kOnWall, min_width, max_width);
     for (const auto& o : openings_)
-      if (const auto d = planning::Anchored(view, o, kOnWall / 2)) doorways.push_back(*d);
+      if (const auto d = planning::Anchored(view, map_walls, o, kOnWall / 2)) doorways.push_back(*d);
     for (const auto& d : doorways) {
       bool failed = false;
       for (const auto& f : failed_doorways_) failed = failed || core::Distance(f, d.middle()) < kSame;
@@ -229,7 +235,6 @@ class NavigationPolicy : public AgentPolicy {
   std::optional<Vec2> doorway_;        // the middle of the doorway hypothesis the agent heads through now
   std::vector<Vec2> failed_doorways_;  // middles of those it made no headway through
   std::vector<planning::Doorway> openings_;  // walls beside a place recovery led to, opened (OpeningsNear)
-  double step_length_;
   planning::FrontierChoice choice_;
   std::map<int, double> estimates_;
   int cut_off_ = 0, nudges_ = 0;

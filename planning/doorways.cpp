@@ -52,11 +52,18 @@ std::vector<Doorway> OpeningsNear(const mapping::MapView& view, size_t num_walls
   return out;
 }
 
-std::optional<Doorway> Anchored(const mapping::MapView& view, const Doorway& doorway, double tolerance) {
-  for (size_t w = 0; w < view.walls.size(); ++w) {
-    const core::Segment2 s{view.walls[w].pa, view.walls[w].pb};
-    if (core::DistanceToSegment(doorway.a, s) <= tolerance && core::DistanceToSegment(doorway.b, s) <= tolerance)
-      return Doorway{doorway.a, doorway.b, int(w)};
+std::optional<Doorway> Anchored(const mapping::MapView& view, size_t num_walls, const Doorway& doorway,
+                                double tolerance) {
+  for (size_t w = 0; w < std::min(num_walls, view.walls.size()); ++w) {
+    const Vec2 pa = view.walls[w].pa, pb = view.walls[w].pb;
+    const double length = core::Distance(pa, pb);
+    if (length <= 0 || core::DistanceToSegment(doorway.a, {pa, pb}) > tolerance ||
+        core::DistanceToSegment(doorway.b, {pa, pb}) > tolerance)
+      continue;
+    const Vec2 u = (pb - pa) * (1.0 / length);
+    const auto along = [&](const Vec2& p) { return std::clamp((p - pa).x * u.x + (p - pa).y * u.y, 0.0, length); };
+    const double ta = along(doorway.a), tb = along(doorway.b);
+    return Doorway{pa + u * std::min(ta, tb), pa + u * std::max(ta, tb), int(w)};
   }
   return std::nullopt;
 }

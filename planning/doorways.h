@@ -25,16 +25,18 @@ struct Doorway {
 std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tolerance, double min_width,
                                        double max_width);
 
-// Openings 'width' wide (or the whole wall where it is shorter) centred on the point of each of the view's
-// first 'num_walls' walls nearest 'at', for the walls within 'reach' of it: where the map seals the goal off
-// and the agent stands at the place its recovery leads it to, a wall beside it may be one drawn across the way
-// (its evidence from far views, which the near ones do not overturn).
+// Openings 'width' wide (or the whole wall where it is shorter) on each of the view's first 'num_walls' walls
+// within 'reach' of 'at', centred on the wall's point nearest 'at' as far as the wall's ends allow: where the
+// map seals the goal off and the agent stands at the place its recovery leads it to, a wall beside it may be
+// one drawn across the way (its evidence from far views, which the near ones do not overturn).
 std::vector<Doorway> OpeningsNear(const mapping::MapView& view, size_t num_walls, const core::Vec2& at,
                                   double reach, double width);
 
-// The doorway a-b on the view's wall that passes within 'tolerance' of both (the first such), if any: a
-// doorway found on an earlier view, on this one's walls.
-std::optional<Doorway> Anchored(const mapping::MapView& view, const Doorway& doorway, double tolerance);
+// The doorway a-b on the first of the view's first 'num_walls' walls that passes within 'tolerance' of both
+// ends, if any: a doorway found on an earlier view, on this one's walls, its ends put on the wall in the
+// wall's direction (as WithDoorway needs them).
+std::optional<Doorway> Anchored(const mapping::MapView& view, size_t num_walls, const Doorway& doorway,
+                                double tolerance);
 
 // The view with the doorway's piece of its wall removed (the jambs become vertices of the two pieces left).
 mapping::MapView WithDoorway(const mapping::MapView& view, const Doorway& doorway);

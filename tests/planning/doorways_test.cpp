@@ -88,13 +88,27 @@ TEST(Doorways, TheWallsBesideAnAgentOpenAtTheirNearestPointsWithinTheirEnds) {
 
 TEST(Doorways, AnOpeningIsFoundAgainOnTheWallThatStillRunsThroughItsEnds) {
   mapping::MapView view = ClosedRoom({});
-  const Doorway opening{{20, 0}, {28, 0}, 0};
+  const Doorway opening{{20, 0.5}, {28, 0.5}, 0};
   std::swap(view.walls[0], view.walls[2]);  // the wall's index changed between views
-  const auto again = Anchored(view, opening, 1.0);
+  const auto again = Anchored(view, view.walls.size(), opening, 1.0);
   ASSERT_TRUE(again);
   EXPECT_EQ(again->wall, 2);
+  EXPECT_NEAR(again->a.y, 0.0, 1e-9) << "the ends put on the wall";
+  EXPECT_FALSE(Anchored(view, 2, opening, 1.0)) << "only the first walls (the map's own) are searched";
+  // The same wall the other way round: the ends follow it, so that WithDoorway opens the piece between them.
+  std::swap(view.walls[2].pa, view.walls[2].pb);
+  std::swap(view.walls[2].a, view.walls[2].b);
+  const auto reversed = Anchored(view, view.walls.size(), opening, 1.0);
+  ASSERT_TRUE(reversed);
+  EXPECT_NEAR(reversed->a.x, 28.0, 1e-9);
+  EXPECT_NEAR(reversed->b.x, 20.0, 1e-9);
+  PlannerOptions o;
+  o.inflation_radius = 2.0;
+  o.clearance = 1.0;
+  EXPECT_TRUE(VisibilityGraph(WithDoorway(view, *reversed), o, false).Plan({24, 20}, {24, -30}))
+      << "a way out through the opening";
   view.walls[2].pa.y = view.walls[2].pb.y = -3;  // the wall moved away
-  EXPECT_FALSE(Anchored(view, opening, 1.0));
+  EXPECT_FALSE(Anchored(view, view.walls.size(), opening, 1.0));
 }
 
 }  // namespace
