@@ -8,6 +8,18 @@ namespace toponav::planning {
 
 using core::Vec2;
 
+namespace {
+
+// How far along the wall from pa toward pb the foot of p's perpendicular lies (world units; outside [0,
+// length] where it falls past an end).
+double Along(const mapping::MapWall& wall, const Vec2& p) {
+  const Vec2 d = wall.pb - wall.pa;
+  const double length = core::Distance(wall.pa, wall.pb);
+  return ((p - wall.pa).x * d.x + (p - wall.pa).y * d.y) / length;
+}
+
+}  // namespace
+
 std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tolerance, double min_width,
                                        double max_width) {
   std::vector<Doorway> out;
@@ -19,7 +31,7 @@ std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tole
     // (position along the wall, rejected?)
     std::vector<std::pair<double, bool>> marks{{0.0, false}, {length, false}};
     const auto mark = [&](const Vec2& p, bool rejected) {
-      const double t = ((p - wall.pa).x * d.x + (p - wall.pa).y * d.y) / length;
+      const double t = Along(wall, p);
       if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance)
         marks.push_back({t, rejected});
     };
@@ -45,8 +57,7 @@ std::vector<Doorway> OpeningsNear(const mapping::MapView& view, size_t num_walls
     if (length <= 0 || core::DistanceToSegment(at, {wall.pa, wall.pb}) > reach) continue;
     const Vec2 u = (wall.pb - wall.pa) * (1.0 / length);
     const double half = std::min(width, length) / 2;
-    const double along = (at - wall.pa).x * u.x + (at - wall.pa).y * u.y;
-    const double t = std::clamp(along, half, length - half);
+    const double t = std::clamp(Along(wall, at), half, length - half);
     out.push_back({wall.pa + u * (t - half), wall.pa + u * (t + half), int(w)});
   }
   return out;
@@ -55,14 +66,15 @@ std::vector<Doorway> OpeningsNear(const mapping::MapView& view, size_t num_walls
 std::optional<Doorway> Anchored(const mapping::MapView& view, size_t num_walls, const Doorway& doorway,
                                 double tolerance) {
   for (size_t w = 0; w < std::min(num_walls, view.walls.size()); ++w) {
-    const Vec2 pa = view.walls[w].pa, pb = view.walls[w].pb;
+    const auto& wall = view.walls[w];
+    const Vec2 pa = wall.pa, pb = wall.pb;
     const double length = core::Distance(pa, pb);
     if (length <= 0 || core::DistanceToSegment(doorway.a, {pa, pb}) > tolerance ||
         core::DistanceToSegment(doorway.b, {pa, pb}) > tolerance)
       continue;
     const Vec2 u = (pb - pa) * (1.0 / length);
-    const auto along = [&](const Vec2& p) { return std::clamp((p - pa).x * u.x + (p - pa).y * u.y, 0.0, length); };
-    const double ta = along(doorway.a), tb = along(doorway.b);
+    const double ta = std::clamp(Along(wall, doorway.a), 0.0, length);
+    const double tb = std::clamp(Along(wall, doorway.b), 0.0, length);
     return Doorway{pa + u * std::min(ta, tb), pa + u * std::max(ta, tb), int(w)};
   }
   return std::nullopt;
