@@ -91,6 +91,8 @@ json NavigationJson(const TrialId& id, const NavigationResult& r) {
   j["distance"] = r.distance;
   j["shortest"] = r.shortest;
   j["nudges"] = r.nudges;
+  j["recovery_steps"] = r.recovery_steps;
+  j["longest_hold"] = r.longest_hold;
   j["blocks"] = r.blocks.size();
   j["end_reason"] = r.end_reason;
   j["wall_time_s"] = r.wall_time_s;

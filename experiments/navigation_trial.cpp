@@ -111,8 +111,10 @@ class NavigationPolicy : public AgentPolicy {
       for (size_t i = 0; i < d->frontier_ids.size(); ++i) estimates_[d->frontier_ids[i]] = d->properties[i].ps;
     if (on_estimates) on_estimates(estimates_);
     doorway_.reset();
-    if (choice_.status != planning::PlanStatus::kFound)
+    if (choice_.status != planning::PlanStatus::kFound) {
+      ++recovery_steps_;
       choice_ = Recover(*state.view, view, graph, targets, at, state.step_length);
+    }
     cut_off_ = choice_.status == planning::PlanStatus::kFound ? 0 : cut_off_ + 1;
     if (cut_off_ >= options_.cut_off_steps) return End("cut_off");
     if (choice_.status == planning::PlanStatus::kFound)
@@ -145,6 +147,7 @@ class NavigationPolicy : public AgentPolicy {
   const std::map<int, double>& estimates() const { return estimates_; }
   const std::string& end_reason() const { return end_reason_; }
   int nudges() const { return nudges_; }
+  int recovery_steps() const { return recovery_steps_; }
   // Every motion block added, those Recover took back too (none without search.block_when_stuck).
   std::vector<core::Segment2> added_blocks() const {
     return blocks_ ? blocks_->added() : std::vector<core::Segment2>{};
@@ -237,7 +240,7 @@ class NavigationPolicy : public AgentPolicy {
   std::vector<planning::Doorway> openings_;  // walls beside a place recovery led to, opened (OpeningsNear)
   planning::FrontierChoice choice_;
   std::map<int, double> estimates_;
-  int cut_off_ = 0, nudges_ = 0;
+  int cut_off_ = 0, nudges_ = 0, recovery_steps_ = 0;
   std::string end_reason_ = "step_cap";
 };
 
@@ -280,6 +283,8 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   r.shortest = core::PolylineLength(
       sim::FreePath(world, world.start.position(), world.goal, config.lsp.clearance, config.lsp.cell));
   r.nudges = policy.nudges();
+  r.recovery_steps = policy.recovery_steps();
+  r.longest_hold = planning::LongestHold(loop.paths.at(0), config.navigation.stuck_span);
   r.blocks = policy.added_blocks();
   r.path = loop.paths.at(0);
   r.frontier_ps = policy.estimates();

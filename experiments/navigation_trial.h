@@ -52,6 +52,11 @@ struct NavigationResult {
   double shortest = 0.0;
   std::string end_reason;         // "goal", "stuck", "cut_off" (no way to the goal, nothing to explore), "step_cap"
   int nudges = 0;
+  // The most consecutive positions within navigation.stuck_span of each other (planning::LongestHold): the
+  // trial ends "stuck" where it reaches navigation.stuck_window, so a trial that reached its goal with a long
+  // hold came near that end.
+  int longest_hold = 0;
+  int recovery_steps = 0;  // steps on which the planner found no way to the goal and the recovery chose one
   std::vector<core::Segment2> blocks;  // every motion block added (search.block_when_stuck), taken back or not
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;

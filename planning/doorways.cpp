@@ -28,20 +28,22 @@ std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tole
     const Vec2 d = wall.pb - wall.pa;
     const double length = core::Distance(wall.pa, wall.pb);
     if (length < min_width) continue;
-    // (position along the wall, rejected?)
-    std::vector<std::pair<double, bool>> marks{{0.0, false}, {length, false}};
-    const auto mark = [&](const Vec2& p, bool rejected) {
+    // (position along the wall, what marks it there)
+    enum Mark { kEnd, kCorner, kRejected };
+    std::vector<std::pair<double, Mark>> marks{{0.0, kEnd}, {length, kEnd}};
+    const auto mark = [&](const Vec2& p, Mark m) {
       const double t = Along(wall, p);
-      if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance)
-        marks.push_back({t, rejected});
+      if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance) marks.push_back({t, m});
     };
-    for (const auto& v : view.rejected) mark(v.position, true);
+    for (const auto& v : view.rejected) mark(v.position, kRejected);
     for (const auto& v : view.vertices)
-      if (v.id != wall.a && v.id != wall.b) mark(v.position, false);
+      if (v.id != wall.a && v.id != wall.b) mark(v.position, kCorner);
     std::sort(marks.begin(), marks.end());
     for (size_t i = 0; i + 1 < marks.size(); ++i) {
+      const Mark m0 = marks[i].second, m1 = marks[i + 1].second;
+      const bool jambs = m0 == kRejected || m1 == kRejected || (m0 == kCorner && m1 == kCorner);
       const double width = marks[i + 1].first - marks[i].first;
-      if (!(marks[i].second || marks[i + 1].second) || width < min_width || width > max_width) continue;
+      if (!jambs || width < min_width || width > max_width) continue;
       out.push_back({wall.pa + d * (marks[i].first / length), wall.pa + d * (marks[i + 1].first / length), int(w)});
     }
   }

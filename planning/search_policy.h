@@ -92,4 +92,9 @@ bool PacedForthAndBack(const std::vector<core::Vec2>& trail, const core::Vec2& n
 // counts enough of them in a row.
 bool HeldInPlace(const std::vector<core::Vec2>& trail, const core::Vec2& now, int steps, double span);
 
+// The most consecutive entries of 'trail' that all lie within 'span' of each other (HeldInPlace's test over the
+// whole trail: a goal-directed trial ends "stuck" where this reaches navigation.stuck_window; 0 for an empty
+// trail).  How near a trial that reached its goal came to that end.
+int LongestHold(const std::vector<core::Vec2>& trail, double span);
+
 }  // namespace toponav::planning

@@ -241,6 +241,18 @@ TEST(NavigationTrial, AnAgentStandingWhereItsRecoveryLedItTriesTheWallBesideItAs
   // Standing there, it tries the walls beside it as openings (planning::OpeningsNear) and walks through.
   const NavigationResult r = RunPaperMaze(8731, GoalPlanner::kOptimistic, 200);  // the goal after 128 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  EXPECT_GT(r.recovery_steps, 0) << "the map cut the goal off before the agent walked through";
+  EXPECT_LT(r.longest_hold, NavigationOptions{}.stuck_window) << "the trial's record says how near it came to stuck";
+}
+
+TEST(NavigationTrial, AWallDrawnPastTwoCornersAnOpeningApartIsTriedAsADoorway) {
+  // Tuning maze 9442, optimistic: seen from the end of a corridor, the mouth of a side corridor on its left
+  // wall showed its two corners (16 apart, 8 detections each) but no walls of their own, and the corridor's
+  // wall was drawn 66 units on past both, over the mouth, sealing the goal off.  With no rejected vertex on
+  // the wall no doorway hypothesis opened it: the agent went round suspects for 210 steps and reached the goal
+  // after 304 (457 units).  The two corners make a doorway hypothesis: the goal after 100 steps (157 units).
+  const NavigationResult r = RunPaperMaze(9442, GoalPlanner::kOptimistic, 150);
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
 }
 
 }  // namespace

@@ -54,6 +54,20 @@ TEST(Doorways, AMapCornerOnAWallIsAJambBesideARejectedVertex) {
   EXPECT_TRUE(DoorwayHypotheses(view, 2.0, 8.0, 16.0).empty()) << "map corners alone make no doorway";
 }
 
+TEST(Doorways, TwoMapCornersAWallWasDrawnPastAnOpeningApartAreADoorway) {
+  // Tuning maze 9077: a side corridor's jambs seen down the corridor, both in the map as corners with no walls
+  // of their own, and the corridor's wall drawn on past both, across the side corridor's mouth.
+  mapping::MapView view = ClosedRoom({});
+  view.vertices.push_back({4, {20, 0.5}, {}, 7});
+  view.vertices.push_back({5, {36, -0.3}, {}, 7});
+  const auto doors = DoorwayHypotheses(view, 2.0, 8.0, 24.0);
+  ASSERT_EQ(doors.size(), 1u) << "not from a corner to the wall's end (20 and 24 wide)";
+  EXPECT_EQ(doors[0].wall, 0);
+  EXPECT_NEAR(doors[0].a.x, 20.0, 1e-9);
+  EXPECT_NEAR(doors[0].b.x, 36.0, 1e-9);
+  EXPECT_TRUE(DoorwayHypotheses(view, 2.0, 8.0, 15.0).empty()) << "16 apart: wider than a 15 bound";
+}
+
 TEST(Doorways, APathLeadsThroughTheDoorwayOutOfASealedRoom) {
   const auto view = ClosedRoom({{20, 0.5}, {34, -0.5}});
   PlannerOptions o;

@@ -180,6 +180,19 @@ TEST(HeldInPlace, ALoopOfStepsAcrossLessThanTheSpanIsHeldWalkingOnAndShortTrails
   EXPECT_FALSE(HeldInPlace(walking, {6.0, 0}, 12, 3.6));
 }
 
+TEST(LongestHold, CountsTheMostConsecutivePositionsWithinTheSpanOfEachOther) {
+  EXPECT_EQ(LongestHold({}, 3.0), 0);
+  EXPECT_EQ(LongestHold({{0, 0}}, 3.0), 1);
+  std::vector<core::Vec2> trail;
+  for (int i = 0; i < 5; ++i) trail.push_back({2.0 * i, 0});  // walking: two steps at most within 3
+  for (int i = 0; i < 7; ++i) trail.push_back({9.0 + (i % 2), 0.5 * (i % 3)});  // then held near (9.5, 0.5)
+  for (int i = 1; i < 4; ++i) trail.push_back({10.0 + 4.0 * i, 0});  // and on again
+  EXPECT_EQ(LongestHold(trail, 3.0), 8) << "the hold and the step before it, 8 from it";
+  EXPECT_EQ(LongestHold(trail, 1.0), 2);
+  // A window the last entry cuts short from an entry in its middle, not at its first.
+  EXPECT_EQ(LongestHold({{0, 0}, {2, 0}, {1, 0}, {-1, 0}, {0, 0}}, 2.0), 3);
+}
+
 TEST(Planner, SearchPlannersAreTheNearestFrontierForOneAgentAndTheAssignmentForATeam) {
   const mapping::MapView view = OpenSquare();
   const VisibilityGraph g(view, {}, false);
