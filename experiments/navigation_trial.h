@@ -56,7 +56,7 @@ struct NavigationResult {
   // trial ends "stuck" where it reaches navigation.stuck_window, so a trial that reached its goal with a long
   // hold came near that end.
   int longest_hold = 0;
-  int recovery_steps = 0;  // steps on which the planner found no way to the goal and the recovery chose one
+  int recovery_steps = 0;  // steps on which the planner found no way to the goal (so the recovery ran)
   std::vector<core::Segment2> blocks;  // every motion block added (search.block_when_stuck), taken back or not
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;

@@ -36,8 +36,12 @@ std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tole
       if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance) marks.push_back({t, m});
     };
     for (const auto& v : view.rejected) mark(v.position, kRejected);
-    for (const auto& v : view.vertices)
-      if (v.id != wall.a && v.id != wall.b) mark(v.position, kCorner);
+    // Corners: the map's own vertices (not the ends of walls a policy added), away from the wall's ends.
+    for (const auto& v : view.vertices) {
+      const double t = Along(wall, v.position);
+      if (v.id != wall.a && v.id != wall.b && v.num_detections > 0 && t > tolerance && t < length - tolerance)
+        mark(v.position, kCorner);
+    }
     std::sort(marks.begin(), marks.end());
     for (size_t i = 0; i + 1 < marks.size(); ++i) {
       const Mark m0 = marks[i].second, m1 = marks[i + 1].second;

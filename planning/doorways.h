@@ -1,10 +1,10 @@
 #pragma once
 // Doorway hypotheses.  A map wall with two of the posterior's rejected vertices on it an opening's width apart (or
-// one and the wall's end, or two corners of the map it was drawn past) is often a wall drawn across an opening whose
-// jambs were seen only from afar: the map's MCMC flips one or two vertices at a time and cannot reach a map that
-// needs the jambs and the corners seen through the opening together.  Where the map seals the goal off, planning
-// through such a doorway and driving up to it decides: through an opening the agent sees the far side from close by;
-// at a true wall it makes no headway and the hypothesis is dropped.
+// one and the wall's end or a map corner the wall was drawn past, or two such corners) is often a wall drawn across
+// an opening whose jambs were seen only from afar: the map's MCMC flips one or two vertices at a time and cannot
+// reach a map that needs the jambs and the corners seen through the opening together.  Where the map seals the goal
+// off, planning through such a doorway and driving up to it decides: through an opening the agent sees the far side
+// from close by; at a true wall it makes no headway and the hypothesis is dropped.
 #include <optional>
 #include <vector>
 
@@ -19,9 +19,10 @@ struct Doorway {
   core::Vec2 middle() const { return (a + b) * 0.5; }
 };
 
-// Consecutive points along each map wall -- its ends, and the rejected vertices and the other map vertices
-// within 'tolerance' of it (a wall drawn past a corner of the map: often the jamb of the opening it covers) --
-// between 'min_width' and 'max_width' apart, with at least one rejected vertex of the two or two such corners.
+// Consecutive points along each map wall -- its ends, and the rejected vertices and the other map vertices (with
+// detections, more than 'tolerance' from the wall's ends) within 'tolerance' of it (a wall drawn past a corner of
+// the map: often the jamb of the opening it covers) -- between 'min_width' and 'max_width' apart, with at least
+// one rejected vertex of the two or two such corners.
 std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tolerance, double min_width,
                                        double max_width);
 

@@ -121,7 +121,7 @@ bool HeldInPlace(const std::vector<Vec2>& trail, const Vec2& now, int steps, dou
 int LongestHold(const std::vector<core::Vec2>& trail, double span) {
   TOPONAV_CHECK(span >= 0, "bad hold span " << span);
   int best = 0;
-  size_t first = 0;  // the window [first, j] holds; a new entry too far from one in it moves 'first' past that one
+  size_t first = 0;  // window [first, j] holds; an entry too far from some in it moves 'first' past the last such
   for (size_t j = 0; j < trail.size(); ++j) {
     for (size_t i = j; i-- > first;)
       if (core::Distance(trail[i], trail[j]) > span) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/geometry.h"
+#include "planning/search_policy.h"
 #include "sim/worlds.h"
 #include "tests/testing/worlds.h"
 
@@ -242,13 +243,14 @@ TEST(NavigationTrial, AnAgentStandingWhereItsRecoveryLedItTriesTheWallBesideItAs
   const NavigationResult r = RunPaperMaze(8731, GoalPlanner::kOptimistic, 200);  // the goal after 128 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
   EXPECT_GT(r.recovery_steps, 0) << "the map cut the goal off before the agent walked through";
-  EXPECT_LT(r.longest_hold, NavigationOptions{}.stuck_window) << "the trial's record says how near it came to stuck";
+  const double span = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml").navigation.stuck_span;
+  EXPECT_EQ(r.longest_hold, planning::LongestHold(r.path, span)) << "the record says how near the trial came to stuck";
 }
 
 TEST(NavigationTrial, AWallDrawnPastTwoCornersAnOpeningApartIsTriedAsADoorway) {
   // Tuning maze 9442, optimistic: seen from the end of a corridor, the mouth of a side corridor on its left
   // wall showed its two corners (16 apart, 8 detections each) but no walls of their own, and the corridor's
-  // wall was drawn 66 units on past both, over the mouth, sealing the goal off.  With no rejected vertex on
+  // wall, 66 units long, was drawn on past both, over the mouth, sealing the goal off.  With no rejected vertex on
   // the wall no doorway hypothesis opened it: the agent went round suspects for 210 steps and reached the goal
   // after 304 (457 units).  The two corners make a doorway hypothesis: the goal after 100 steps (157 units).
   const NavigationResult r = RunPaperMaze(9442, GoalPlanner::kOptimistic, 150);

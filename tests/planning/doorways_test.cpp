@@ -33,7 +33,7 @@ TEST(Doorways, TwoRejectedVerticesOnAWallAnOpeningApartAreADoorway) {
   EXPECT_NEAR(doors[0].a.y, 0.0, 1e-9) << "the jambs are put on the wall";
   // From a jamb to the wall's end counts too (here 20 wide: within a 24 bound, not a 16 one).
   EXPECT_EQ(DoorwayHypotheses(view, 2.0, 8.0, 24.0).size(), 2u);
-  EXPECT_TRUE(DoorwayHypotheses(ClosedRoom({}), 2.0, 8.0, 100.0).empty()) << "no rejected vertex, no doorway";
+  EXPECT_TRUE(DoorwayHypotheses(ClosedRoom({}), 2.0, 8.0, 100.0).empty()) << "nothing on the walls, no doorway";
   EXPECT_TRUE(DoorwayHypotheses(ClosedRoom({{20, 3}, {34, 3}}), 2.0, 8.0, 16.0).empty())
       << "vertices farther than the tolerance from the wall are not on it";
 }
@@ -51,7 +51,7 @@ TEST(Doorways, AMapCornerOnAWallIsAJambBesideARejectedVertex) {
   EXPECT_NEAR(doors[0].a.x, 20.0, 1e-9);
   EXPECT_NEAR(doors[0].b.x, 34.0, 1e-9);
   view.rejected.clear();
-  EXPECT_TRUE(DoorwayHypotheses(view, 2.0, 8.0, 16.0).empty()) << "map corners alone make no doorway";
+  EXPECT_TRUE(DoorwayHypotheses(view, 2.0, 8.0, 16.0).empty()) << "one map corner and the wall's ends make no doorway";
 }
 
 TEST(Doorways, TwoMapCornersAWallWasDrawnPastAnOpeningApartAreADoorway) {
@@ -66,6 +66,12 @@ TEST(Doorways, TwoMapCornersAWallWasDrawnPastAnOpeningApartAreADoorway) {
   EXPECT_NEAR(doors[0].a.x, 20.0, 1e-9);
   EXPECT_NEAR(doors[0].b.x, 36.0, 1e-9);
   EXPECT_TRUE(DoorwayHypotheses(view, 2.0, 8.0, 15.0).empty()) << "16 apart: wider than a 15 bound";
+  // Neither the end of a wall a policy added (no detections) nor a corner at the wall's end is a jamb.
+  mapping::MapView added = ClosedRoom({});
+  added.vertices.push_back({4, {20, 0.5}, {}, 7});
+  added.vertices.push_back({5, {36, -0.3}, {}, 0});
+  added.vertices.push_back({6, {1, 0.5}, {}, 7});
+  EXPECT_TRUE(DoorwayHypotheses(added, 2.0, 8.0, 24.0).empty());
 }
 
 TEST(Doorways, APathLeadsThroughTheDoorwayOutOfASealedRoom) {

@@ -187,9 +187,9 @@ TEST(LongestHold, CountsTheMostConsecutivePositionsWithinTheSpanOfEachOther) {
   for (int i = 0; i < 5; ++i) trail.push_back({2.0 * i, 0});  // walking: two steps at most within 3
   for (int i = 0; i < 7; ++i) trail.push_back({9.0 + (i % 2), 0.5 * (i % 3)});  // then held near (9.5, 0.5)
   for (int i = 1; i < 4; ++i) trail.push_back({10.0 + 4.0 * i, 0});  // and on again
-  EXPECT_EQ(LongestHold(trail, 3.0), 8) << "the hold and the step before it, 8 from it";
+  EXPECT_EQ(LongestHold(trail, 3.0), 8) << "(8, 0) before the hold, and the hold";
   EXPECT_EQ(LongestHold(trail, 1.0), 2);
-  // A window the last entry cuts short from an entry in its middle, not at its first.
+  // (-1, 0) lies too far from (2, 0), the window's second entry, not from its first.
   EXPECT_EQ(LongestHold({{0, 0}, {2, 0}, {1, 0}, {-1, 0}, {0, 0}}, 2.0), 3);
 }
 
