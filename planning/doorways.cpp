@@ -31,17 +31,16 @@ std::vector<Doorway> DoorwayHypotheses(const mapping::MapView& view, double tole
     // (position along the wall, what marks it there)
     enum Mark { kEnd, kCorner, kRejected };
     std::vector<std::pair<double, Mark>> marks{{0.0, kEnd}, {length, kEnd}};
-    const auto mark = [&](const Vec2& p, Mark m) {
+    // p marks the wall where it lies within 'tolerance' of it and more than 'margin' from its ends.
+    const auto mark = [&](const Vec2& p, Mark m, double margin) {
       const double t = Along(wall, p);
-      if (t > 0 && t < length && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance) marks.push_back({t, m});
+      if (t > margin && t < length - margin && core::DistanceToSegment(p, {wall.pa, wall.pb}) <= tolerance)
+        marks.push_back({t, m});
     };
-    for (const auto& v : view.rejected) mark(v.position, kRejected);
+    for (const auto& v : view.rejected) mark(v.position, kRejected, 0.0);
     // Corners: the map's own vertices (not the ends of walls a policy added), away from the wall's ends.
-    for (const auto& v : view.vertices) {
-      const double t = Along(wall, v.position);
-      if (v.id != wall.a && v.id != wall.b && v.num_detections > 0 && t > tolerance && t < length - tolerance)
-        mark(v.position, kCorner);
-    }
+    for (const auto& v : view.vertices)
+      if (v.id != wall.a && v.id != wall.b && v.num_detections > 0) mark(v.position, kCorner, tolerance);
     std::sort(marks.begin(), marks.end());
     for (size_t i = 0; i + 1 < marks.size(); ++i) {
       const Mark m0 = marks[i].second, m1 = marks[i + 1].second;
