@@ -92,6 +92,7 @@ json NavigationJson(const TrialId& id, const NavigationResult& r) {
   j["shortest"] = r.shortest;
   j["nudges"] = r.nudges;
   j["recovery_steps"] = r.recovery_steps;
+  j["repeated_steps"] = r.repeated_steps;
   j["longest_hold"] = r.longest_hold;
   j["blocks"] = r.blocks.size();
   j["end_reason"] = r.end_reason;

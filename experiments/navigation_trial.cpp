@@ -45,6 +45,14 @@ mapping::MapView WithRegionWalls(const mapping::MapView& view, const core::Aabb2
   return v;
 }
 
+// A step counts as repeated (planning::RepeatedStep) where it repeats the steps one and two laps of a loop
+// before it, both ends of each within this many steps' length: a loop that the same map and plan make the
+// agent walk again lands within about a hundredth of a step of the lap before.  A loop walked twice often
+// ends by itself when the map is next sampled (the simulated sensor's tuning mazes 3000-6999); a third lap
+// seldom does.
+constexpr double kRepeatTolerance = 0.05;
+constexpr int kRepeatLaps = 2;
+
 // The nearest frontier within 'reach' of p (-1: none).
 int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2& p, double reach) {
   int best = -1;
@@ -58,9 +66,10 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 }
 
 // The goal-directed policy: the planner's way to the goal every step.  An agent that makes no headway is nudged
-// as in a search; pacing forth and back (planning::PacedForthAndBack) and a loop of steps that stays within two
-// steps across for 2 * search.stuck_steps steps (planning::HeldInPlace) count as no headway too (so an agent
-// that a nudge leaves inside the loop is nudged again every stuck_steps steps until it leaves).  The frontier
+// as in a search; pacing forth and back (planning::PacedForthAndBack), a loop of steps that stays within two
+// steps across for 2 * search.stuck_steps steps (planning::HeldInPlace) and the third lap of a loop of up to
+// 4 * stuck_steps steps, of any width (planning::RepeatedStep) count as no headway too (so an agent that a
+// nudge leaves inside the loop is nudged again every stuck_steps steps until it leaves).  The frontier
 // it stands at is blocked where it stood: a wall the map has not accepted yet (its vertices seen edge-on or
 // from too close, or a blank wall longer than the sensor's range) that the optimistic way runs through.  The
 // part of a blocked frontier within search.give_up_probe_radius of the agent is a free-standing wall to the
@@ -127,8 +136,11 @@ class NavigationPolicy : public AgentPolicy {
     const bool has_path = choice_.status == planning::PlanStatus::kFound && choice_.path.points.size() > 1;
     const std::vector<Vec2>& trail = (*state.trails)[0];
     const Vec2 at = step.pose.position();
+    const bool repeated = has_path && planning::RepeatedStep(trail, at, 2 * stuck_.pacing_steps(), kRepeatLaps,
+                                                             kRepeatTolerance * state.step_length);
+    repeated_steps_ += repeated;
     const bool held = planning::PacedForthAndBack(trail, at, state.step_length) ||
-                      planning::HeldInPlace(trail, at, stuck_.pacing_steps(), 2 * state.step_length);
+                      planning::HeldInPlace(trail, at, stuck_.pacing_steps(), 2 * state.step_length) || repeated;
     const bool stuck = (has_path && held) || stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);
     if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, choice_.path.points, trail.back(), at);
     if (!stuck_.Record(agent, stuck)) return step;
@@ -148,6 +160,7 @@ class NavigationPolicy : public AgentPolicy {
   const std::string& end_reason() const { return end_reason_; }
   int nudges() const { return nudges_; }
   int recovery_steps() const { return recovery_steps_; }
+  int repeated_steps() const { return repeated_steps_; }
   // Every motion block added, those Recover took back too (none without search.block_when_stuck).
   std::vector<core::Segment2> added_blocks() const {
     return blocks_ ? blocks_->added() : std::vector<core::Segment2>{};
@@ -240,7 +253,7 @@ class NavigationPolicy : public AgentPolicy {
   std::vector<planning::Doorway> openings_;  // walls beside a place recovery led to, opened (OpeningsNear)
   planning::FrontierChoice choice_;
   std::map<int, double> estimates_;
-  int cut_off_ = 0, nudges_ = 0, recovery_steps_ = 0;
+  int cut_off_ = 0, nudges_ = 0, recovery_steps_ = 0, repeated_steps_ = 0;
   std::string end_reason_ = "step_cap";
 };
 
@@ -284,6 +297,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
       sim::FreePath(world, world.start.position(), world.goal, config.lsp.clearance, config.lsp.cell));
   r.nudges = policy.nudges();
   r.recovery_steps = policy.recovery_steps();
+  r.repeated_steps = policy.repeated_steps();
   r.longest_hold = planning::LongestHold(loop.paths.at(0), config.navigation.stuck_span);
   r.blocks = policy.added_blocks();
   r.path = loop.paths.at(0);

@@ -118,6 +118,23 @@ bool HeldInPlace(const std::vector<Vec2>& trail, const Vec2& now, int steps, dou
   return true;
 }
 
+bool RepeatedStep(const std::vector<Vec2>& trail, const Vec2& now, int max_period, int laps, double tolerance) {
+  TOPONAV_CHECK(max_period >= 1 && laps >= 1 && tolerance >= 0, "bad repeated-step parameters");
+  const size_t n = trail.size();
+  if (n == 0 || core::Distance(trail.back(), now) <= tolerance) return false;
+  // The step (trail[n-1], now) against the step 'back' steps before it, (trail[n-1-back], trail[n-back]).
+  auto repeats = [&](size_t back) {
+    return core::Distance(trail[n - 1 - back], trail[n - 1]) <= tolerance &&
+           core::Distance(trail[n - back], now) <= tolerance;
+  };
+  for (size_t period = 1; period <= size_t(max_period) && size_t(laps) * period < n; ++period) {
+    bool all = true;
+    for (size_t lap = 1; lap <= size_t(laps) && all; ++lap) all = repeats(lap * period);
+    if (all) return true;
+  }
+  return false;
+}
+
 int LongestHold(const std::vector<core::Vec2>& trail, double span) {
   TOPONAV_CHECK(span >= 0, "bad hold span " << span);
   int best = 0;

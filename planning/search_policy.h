@@ -92,6 +92,15 @@ bool PacedForthAndBack(const std::vector<core::Vec2>& trail, const core::Vec2& n
 // counts enough of them in a row.
 bool HeldInPlace(const std::vector<core::Vec2>& trail, const core::Vec2& now, int steps, double span);
 
+// True if the step from trail.back() to 'now' repeats the steps 'period', 2 * period, ... 'laps' * period steps
+// before it, for some period up to 'max_period': each began within 'tolerance' of trail.back() and ended within
+// 'tolerance' of 'now' (a step shorter than 'tolerance' repeats nothing).  Motion is deterministic, so an agent
+// whose map and plan stay the same from one lap to the next walks a loop of steps over and over; the loop may
+// be wider than HeldInPlace's span and make headway at every step.  Walking back the way it came reverses its
+// steps and does not repeat them.
+bool RepeatedStep(const std::vector<core::Vec2>& trail, const core::Vec2& now, int max_period, int laps,
+                  double tolerance);
+
 // The most consecutive entries of 'trail' that all lie within 'span' of each other (HeldInPlace's test over the
 // whole trail: a goal-directed trial ends "stuck" where this reaches navigation.stuck_window; 0 for an empty
 // trail).  How near a trial that reached its goal came to that end.

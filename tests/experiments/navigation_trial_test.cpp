@@ -216,6 +216,16 @@ TEST(NavigationTrial, AnAgentWalkingALoopInPlaceAsItsPlanFlipsIsNudged) {
   EXPECT_GT(r.nudges, 0);
 }
 
+TEST(NavigationTrial, AnAgentWalkingTheSameWideLoopLapAfterLapIsNudged) {
+  // Tuning maze 5769, optimistic with the simulated sensor: pressed into a corner the map lacks, the agent
+  // walked the same loop of 20 steps, 5 units across, lap after lap (each lap within a hundredth of a unit of
+  // the one before), making headway on most steps: no other test counted it, and the run ended "stuck" after
+  // 503 steps.  The third lap's steps count as no headway (planning::RepeatedStep), so it is nudged out.
+  const NavigationResult r = RunMaze("noisy.yaml", 5769, GoalPlanner::kOptimistic, 580);  // the goal after 546 steps
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  EXPECT_GT(r.repeated_steps, 0) << "the record counts the repeated steps";
+}
+
 TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) {
   // Tuning maze 7249, the oracle: a corner detected past the end of the column's side wall, seen edge-on, was
   // joined to the wall's far end, and the wall drawn along the side wall and across the opening beyond its end

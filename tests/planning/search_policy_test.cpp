@@ -180,6 +180,31 @@ TEST(HeldInPlace, ALoopOfStepsAcrossLessThanTheSpanIsHeldWalkingOnAndShortTrails
   EXPECT_FALSE(HeldInPlace(walking, {6.0, 0}, 12, 3.6));
 }
 
+TEST(RepeatedStep, TheThirdLapOfTheSameLoopRepeatsItsStepsWalkingBackAndStandingDoNot) {
+  // Simulated-sensor tuning maze 6777: a loop of five steps (1.8 long or shorter, pressing at a wall the map
+  // lacks) 3.6 across, walked over and over, each lap within a hundredth of a unit of the one before.
+  const std::vector<core::Vec2> loop{{14.37, 49.31}, {15.81, 50.39}, {16.31, 50.89}, {16.91, 51.86}, {15.64, 50.59}};
+  std::vector<core::Vec2> trail;
+  for (int i = 0; i < 10; ++i) trail.push_back(loop[size_t(i) % 5] + core::Vec2{0.01 * (i / 5), 0});
+  trail.push_back({14.39, 49.31});
+  const core::Vec2 next{15.83, 50.40};  // the third lap's first step
+  EXPECT_TRUE(RepeatedStep(trail, next, 24, 2, 0.09));
+  EXPECT_TRUE(RepeatedStep(trail, next, 5, 2, 0.09)) << "a loop as long as the longest period";
+  EXPECT_FALSE(RepeatedStep(trail, next, 4, 2, 0.09)) << "a loop longer than the longest period";
+  EXPECT_FALSE(RepeatedStep(trail, next, 24, 3, 0.09)) << "no fourth lap yet";
+  EXPECT_FALSE(RepeatedStep(trail, {15.83, 50.60}, 24, 2, 0.09)) << "ending 0.2 from where the laps' steps ended";
+  const std::vector<core::Vec2> one_lap(trail.begin() + 5, trail.end());
+  EXPECT_TRUE(RepeatedStep(one_lap, next, 24, 1, 0.09)) << "the second lap";
+  EXPECT_FALSE(RepeatedStep(one_lap, next, 24, 2, 0.09)) << "the second lap is not the third";
+  // Walking up a corridor and back down it the same way: the same positions, each step reversed.
+  std::vector<core::Vec2> corridor;
+  for (int i = 0; i <= 6; ++i) corridor.push_back({0, 1.8 * i});
+  for (int i = 5; i > 0; --i) corridor.push_back({0, 1.8 * i});
+  EXPECT_FALSE(RepeatedStep(corridor, {0, 0}, 24, 1, 0.09)) << "walking back";
+  EXPECT_FALSE(RepeatedStep({{0, 0}, {0, 0}, {0, 0}}, {0, 0}, 24, 1, 0.09)) << "standing repeats no step";
+  EXPECT_FALSE(RepeatedStep({}, {0, 0}, 24, 1, 0.09));
+}
+
 TEST(LongestHold, CountsTheMostConsecutivePositionsWithinTheSpanOfEachOther) {
   EXPECT_EQ(LongestHold({}, 3.0), 0);
   EXPECT_EQ(LongestHold({{0, 0}}, 3.0), 1);
