@@ -46,10 +46,8 @@ mapping::MapView WithRegionWalls(const mapping::MapView& view, const core::Aabb2
 }
 
 // A step counts as repeated (planning::RepeatedStep) where it repeats the steps one and two laps of a loop
-// before it, both ends of each within this many steps' length: a loop that the same map and plan make the
-// agent walk again lands within about a hundredth of a step of the lap before.  A loop walked twice often
-// ends by itself when the map is next sampled (the simulated sensor's tuning mazes 3000-6999); a third lap
-// seldom does.
+// before it, both ends of each within this many steps' length: it belongs to the third lap, or a later one, of
+// a loop that the same map and plan make the agent walk within about a hundredth of a unit of the lap before.
 constexpr double kRepeatTolerance = 0.05;
 constexpr int kRepeatLaps = 2;
 
@@ -138,7 +136,7 @@ class NavigationPolicy : public AgentPolicy {
     const Vec2 at = step.pose.position();
     const bool repeated = has_path && planning::RepeatedStep(trail, at, 2 * stuck_.pacing_steps(), kRepeatLaps,
                                                              kRepeatTolerance * state.step_length);
-    repeated_steps_ += repeated;
+    if (repeated) ++repeated_steps_;
     const bool held = planning::PacedForthAndBack(trail, at, state.step_length) ||
                       planning::HeldInPlace(trail, at, stuck_.pacing_steps(), 2 * state.step_length) || repeated;
     const bool stuck = (has_path && held) || stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);

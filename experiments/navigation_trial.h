@@ -57,7 +57,7 @@ struct NavigationResult {
   // hold came near that end.
   int longest_hold = 0;
   int recovery_steps = 0;  // steps on which the planner found no way to the goal (so the recovery ran)
-  int repeated_steps = 0;  // steps of a third lap of the same loop (planning::RepeatedStep)
+  int repeated_steps = 0;  // steps of a third or later lap of the same loop, with a path (planning::RepeatedStep)
   std::vector<core::Segment2> blocks;  // every motion block added (search.block_when_stuck), taken back or not
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;

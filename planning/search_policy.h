@@ -94,10 +94,10 @@ bool HeldInPlace(const std::vector<core::Vec2>& trail, const core::Vec2& now, in
 
 // True if the step from trail.back() to 'now' repeats the steps 'period', 2 * period, ... 'laps' * period steps
 // before it, for some period up to 'max_period': each began within 'tolerance' of trail.back() and ended within
-// 'tolerance' of 'now' (a step shorter than 'tolerance' repeats nothing).  Motion is deterministic, so an agent
-// whose map and plan stay the same from one lap to the next walks a loop of steps over and over; the loop may
-// be wider than HeldInPlace's span and make headway at every step.  Walking back the way it came reverses its
-// steps and does not repeat them.
+// 'tolerance' of 'now' (a step no longer than 'tolerance' repeats nothing).  Motion is deterministic, so an
+// agent whose map and plan stay the same from one lap to the next walks a loop of steps over and over; the loop
+// may be wider than HeldInPlace's span and make headway at every step.  Walking back once the way it came
+// reverses its steps and does not repeat them.
 bool RepeatedStep(const std::vector<core::Vec2>& trail, const core::Vec2& now, int max_period, int laps,
                   double tolerance);
 

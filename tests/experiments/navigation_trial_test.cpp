@@ -218,9 +218,10 @@ TEST(NavigationTrial, AnAgentWalkingALoopInPlaceAsItsPlanFlipsIsNudged) {
 
 TEST(NavigationTrial, AnAgentWalkingTheSameWideLoopLapAfterLapIsNudged) {
   // Tuning maze 5769, optimistic with the simulated sensor: pressed into a corner the map lacks, the agent
-  // walked the same loop of 20 steps, 5 units across, lap after lap (each lap within a hundredth of a unit of
-  // the one before), making headway on most steps: no other test counted it, and the run ended "stuck" after
-  // 503 steps.  The third lap's steps count as no headway (planning::RepeatedStep), so it is nudged out.
+  // walks the same loop of 20 steps, 5 units across, lap after lap (each lap within a hundredth of a unit of
+  // the one before), making headway on most steps, too wide for HeldInPlace.  The third lap's steps count as
+  // no headway (planning::RepeatedStep), so it is nudged out and reaches the goal (counted as no headway by
+  // nothing, the loop ends the run "stuck" after 503 steps).
   const NavigationResult r = RunMaze("noisy.yaml", 5769, GoalPlanner::kOptimistic, 580);  // the goal after 546 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
   EXPECT_GT(r.repeated_steps, 0) << "the record counts the repeated steps";

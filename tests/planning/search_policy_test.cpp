@@ -181,21 +181,22 @@ TEST(HeldInPlace, ALoopOfStepsAcrossLessThanTheSpanIsHeldWalkingOnAndShortTrails
 }
 
 TEST(RepeatedStep, TheThirdLapOfTheSameLoopRepeatsItsStepsWalkingBackAndStandingDoNot) {
-  // Simulated-sensor tuning maze 6777: a loop of five steps (1.8 long or shorter, pressing at a wall the map
-  // lacks) 3.6 across, walked over and over, each lap within a hundredth of a unit of the one before.
-  const std::vector<core::Vec2> loop{{14.37, 49.31}, {15.81, 50.39}, {16.31, 50.89}, {16.91, 51.86}, {15.64, 50.59}};
-  std::vector<core::Vec2> trail;
-  for (int i = 0; i < 10; ++i) trail.push_back(loop[size_t(i) % 5] + core::Vec2{0.01 * (i / 5), 0});
-  trail.push_back({14.39, 49.31});
-  const core::Vec2 next{15.83, 50.40};  // the third lap's first step
+  // A loop of six steps 5 units across (wider than HeldInPlace's two steps), each lap 0.01 off the one before,
+  // as an agent pressing into a corner the map lacks walks it (simulated-sensor tuning maze 5769).
+  const std::vector<core::Vec2> loop{{0, 0}, {1.8, 0}, {3.6, 0}, {5.0, 0.5}, {3.4, 1.2}, {1.6, 1.0}};
+  std::vector<core::Vec2> trail{{-9, -9}, {-8, -8}, {-7, -7}};  // walking up to it
+  for (int i = 0; i < 12; ++i) trail.push_back(loop[size_t(i) % 6] + core::Vec2{0.01 * (i / 6), 0});
+  trail.push_back({0.02, 0});
+  const core::Vec2 next{1.82, 0};  // the third lap's first step
   EXPECT_TRUE(RepeatedStep(trail, next, 24, 2, 0.09));
-  EXPECT_TRUE(RepeatedStep(trail, next, 5, 2, 0.09)) << "a loop as long as the longest period";
-  EXPECT_FALSE(RepeatedStep(trail, next, 4, 2, 0.09)) << "a loop longer than the longest period";
+  EXPECT_TRUE(RepeatedStep(trail, next, 6, 2, 0.09)) << "a loop as long as the longest period";
+  EXPECT_FALSE(RepeatedStep(trail, next, 5, 2, 0.09)) << "a loop longer than the longest period";
   EXPECT_FALSE(RepeatedStep(trail, next, 24, 3, 0.09)) << "no fourth lap yet";
-  EXPECT_FALSE(RepeatedStep(trail, {15.83, 50.60}, 24, 2, 0.09)) << "ending 0.2 from where the laps' steps ended";
-  const std::vector<core::Vec2> one_lap(trail.begin() + 5, trail.end());
-  EXPECT_TRUE(RepeatedStep(one_lap, next, 24, 1, 0.09)) << "the second lap";
-  EXPECT_FALSE(RepeatedStep(one_lap, next, 24, 2, 0.09)) << "the second lap is not the third";
+  EXPECT_FALSE(RepeatedStep(trail, {1.82, 0.2}, 24, 2, 0.09)) << "ending 0.2 from where the laps' steps ended";
+  std::vector<core::Vec2> detour = trail;
+  detour[detour.size() - 6] = {0.5, -0.5};  // the second lap's first step went elsewhere
+  EXPECT_TRUE(RepeatedStep(detour, next, 24, 1, 0.09)) << "it repeats the first lap's step";
+  EXPECT_FALSE(RepeatedStep(detour, next, 24, 2, 0.09)) << "but not the second lap's";
   // Walking up a corridor and back down it the same way: the same positions, each step reversed.
   std::vector<core::Vec2> corridor;
   for (int i = 0; i <= 6; ++i) corridor.push_back({0, 1.8 * i});
