@@ -237,7 +237,7 @@ void ReadBench(YamlSection b, BenchOptions* bench) {
     row.Read("agents", &r.agents, 1, 16);
     row.Read("planner", &r.planner);
     if (!r.planner.empty() && !ParseGoalPlanner(r.planner))
-      row.Fail("planner", r.planner, "not a goal-directed planner (optimistic, oracle, lsp)");
+      row.Fail("planner", r.planner, "not a goal-directed planner (optimistic, oracle, lsp, known)");
     if (!r.planner.empty() && r.agents != 1)
       row.Fail("agents", std::to_string(r.agents), "navigation trials have one agent");
     row.Finish();

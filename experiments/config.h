@@ -35,7 +35,7 @@ struct DemoJob {
 struct BenchRow {
   core::WorldKind kind = core::WorldKind::kLabyrinth;
   int agents = 1;
-  std::string planner;  // "" (a search) or a goal-directed planner: "optimistic", "oracle", "lsp"
+  std::string planner;  // "" (a search) or a goal-directed planner: "optimistic", "oracle", "lsp", "known"
 };
 
 // Which trials of a bench get a final picture (bench.pictures: true, false or failures).

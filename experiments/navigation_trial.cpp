@@ -24,7 +24,8 @@ namespace {
 // The planner 'kind' names; for "lsp" also its estimator, which the policy feeds the observations.
 std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, const Config& config, GoalPlanner kind,
                                                      planning::CellAveragingEstimator** cells) {
-  if (kind == GoalPlanner::kOptimistic) return planning::CreatePlanner(planning::PlannerKind::kOptimistic);
+  if (kind == GoalPlanner::kOptimistic || kind == GoalPlanner::kKnown)
+    return planning::CreatePlanner(planning::PlannerKind::kOptimistic);
   std::unique_ptr<planning::SubgoalEstimator> estimator;
   if (kind == GoalPlanner::kOracle) {
     estimator = planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance);
@@ -34,6 +35,22 @@ std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, c
     estimator = std::move(averaging);
   }
   return planning::CreateLspPlanner(std::move(estimator), config.lsp, config.planning, world.bounds, ToString(kind));
+}
+
+// The true world's walls as a map (every ring's corners its vertices, no frontiers; clutter, which no map holds,
+// left out): planner "known" plans on it.
+mapping::MapView TrueMap(const core::World& world) {
+  mapping::MapView view;
+  int id = 0;
+  for (const core::Ring* ring : core::MapRings(world)) {
+    const int first = id;
+    for (const Vec2& p : *ring) view.vertices.push_back({id++, p, {}, 0});
+    for (int i = first; i < id; ++i) {
+      const int j = i + 1 < id ? i + 1 : first;
+      view.walls.push_back({i, j, view.vertices[i].position, view.vertices[j].position, 1.0});
+    }
+  }
+  return view;
 }
 
 // The view with the region's edges as walls: the region of interest (the maze's extent) is known, and a
@@ -82,7 +99,8 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // (planning::SuspectInspector); the trial ends "cut_off" only when none is left for cut_off_steps steps.  Where
 // the agent stands at the place the inspector leads it to, the map walls within inspect_reach of it become
 // openings (planning::OpeningsNear) that later doorway searches try too, each until the agent makes no
-// headway through it.
+// headway through it.  Planner "known" plans on TrueMap(world) in place of the map and of the walls the policy
+// adds (it has no frontiers to block and nothing to recover from).
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -91,6 +109,7 @@ class NavigationPolicy : public AgentPolicy {
         options_(config.navigation),
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
+        true_map_(kind == GoalPlanner::kKnown ? std::optional<mapping::MapView>(TrueMap(world)) : std::nullopt),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(MotionBlocksFor(config, world, 1)),
@@ -105,11 +124,14 @@ class NavigationPolicy : public AgentPolicy {
     // The reference's stuck test: the last stuck_window positions (this one among them) within stuck_span.
     if (planning::HeldInPlace((*state.trails)[0], at, options_.stuck_window, options_.stuck_span)) return End("stuck");
     blocked_.Update(state.view->frontiers);
-    mapping::MapView view = WithRegionWalls(*state.view, region_);
-    for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&view, e);
-    if (blocks_ && !blocks_->blocks().empty()) view = blocks_->With(view);
+    mapping::MapView view = WithRegionWalls(true_map_ ? *true_map_ : *state.view, region_);
+    if (!true_map_) {
+      for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&view, e);
+      if (blocks_ && !blocks_->blocks().empty()) view = blocks_->With(view);
+    }
     const planning::VisibilityGraph graph(view, planning_, false);
-    const std::vector<planning::FrontierTarget> targets = UnprobedTargets(*state.view);
+    const std::vector<planning::FrontierTarget> targets =
+        true_map_ ? std::vector<planning::FrontierTarget>{} : UnprobedTargets(*state.view);
     if (on_plan) on_plan(state, targets);
     const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
     choice_ = planner_->Plan(problem).at(0);
@@ -241,6 +263,7 @@ class NavigationPolicy : public AgentPolicy {
   // its own initializer once planner_ was built (and the network's estimates never reached the planner).
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   std::unique_ptr<planning::Planner> planner_;
+  std::optional<mapping::MapView> true_map_;  // planner "known" only: TrueMap(world)
   planning::StuckMonitor stuck_;
   planning::GivenUpFrontiers blocked_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
@@ -262,12 +285,13 @@ const char* ToString(GoalPlanner planner) {
     case GoalPlanner::kOptimistic: return "optimistic";
     case GoalPlanner::kOracle: return "oracle";
     case GoalPlanner::kLsp: return "lsp";
+    case GoalPlanner::kKnown: return "known";
   }
   return "?";
 }
 
 std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name) {
-  for (const auto p : {GoalPlanner::kOptimistic, GoalPlanner::kOracle, GoalPlanner::kLsp})
+  for (const auto p : {GoalPlanner::kOptimistic, GoalPlanner::kOracle, GoalPlanner::kLsp, GoalPlanner::kKnown})
     if (name == ToString(p)) return p;
   return std::nullopt;
 }

@@ -21,8 +21,10 @@ namespace toponav::experiments {
 // The goal-directed planners a trial (a bench row's `planner:`) may name: "optimistic" (the baseline: unknown
 // space is free), "oracle" (LSP with the true frontier properties: the bound a perfect network reaches),
 // "lsp" (LSP with the sensor's per-cell subgoal estimates averaged per frontier, planning::CellAveragingEstimator;
-// with a sensor that gives none every frontier keeps the optimistic default).
-enum class GoalPlanner { kOptimistic, kOracle, kLsp };
+// with a sensor that gives none every frontier keeps the optimistic default), "known" (the optimistic planner on
+// the true world's walls instead of the map: what a planner that knew the maze travels with the same motion and
+// path rules, the floor every other planner's cost is measured against).
+enum class GoalPlanner { kOptimistic, kOracle, kLsp, kKnown };
 const char* ToString(GoalPlanner planner);
 std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name);
 

@@ -57,7 +57,7 @@ int RunNavigationCommand(const TrialArgs& a) {
   const auto planner = experiments::ParseGoalPlanner(a.planner);
   if (!planner)
     throw core::ConfigError("<command line>", "--planner", a.planner,
-                            "not a goal-directed planner (optimistic, oracle, lsp)");
+                            "not a goal-directed planner (optimistic, oracle, lsp, known)");
   const uint64_t seed = experiments::ParseSeed(a.seed);
   const core::World w = StartAtPose(WorldFromSource(a, cfg), a.pose);
   EnsureDir(a.out);
@@ -209,7 +209,7 @@ CLI::App* AddTrialCommand(CLI::App& app, TrialArgs* a) {
                     "goals (navigation: position, distance to the goal, frontiers, estimates, map size)");
   trial->add_option("--planner", a->planner,
                     "Run goal-directed navigation (start to goal, one agent) with this planner instead: optimistic, "
-                    "oracle, lsp");
+                    "oracle, lsp, known (the optimistic planner on the true walls: the floor)");
   trial->add_option("--frames-every", a->frames_every,
                     "Navigation: also draw the map every this many steps (frame_NNNN.png)")
       ->check(CLI::Range(1, 100000));

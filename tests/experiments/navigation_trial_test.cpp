@@ -90,6 +90,26 @@ TEST(NavigationTrial, TheOracleSkipsTheDeadEndTheOptimisticPlannerWalksInto) {
   EXPECT_GT(oracle_low, 55.0) << "the oracle's agent crossed x 30-60 only along the top corridor";
 }
 
+TEST(NavigationTrial, TheKnownPlannerTakesTheTrueShortestWayFromItsFirstStep) {
+  const core::World w = testing::DeadEndMaze();
+  const Config cfg = ExactMazeConfig();
+  NavigationTrialOptions o;
+  o.planner = GoalPlanner::kOracle;
+  const NavigationResult oracle = RunNavigationTrial(w, cfg, o, 1);
+  o.planner = GoalPlanner::kKnown;
+  const NavigationResult known = RunNavigationTrial(w, cfg, o, 1);
+  ASSERT_TRUE(known.reached) << known.end_reason;
+  EXPECT_EQ(known.planner, "known");
+  EXPECT_EQ(known.nudges, 0);
+  EXPECT_EQ(ParseGoalPlanner("known"), GoalPlanner::kKnown);
+  // Up the left corridor, along the top and down the right one, never into the dead end beside the start.
+  double lowest = 1e9;
+  for (const auto& p : known.path) lowest = std::min(lowest, p.x > 16 && p.x < 118 ? p.y : 1e9);
+  EXPECT_GT(lowest, 55.0) << "the known planner's agent left the left corridor only along the top one";
+  EXPECT_LT(known.distance, oracle.distance + 1.0);
+  EXPECT_LT(known.distance, 1.05 * (known.shortest - cfg.navigation.goal_radius));
+}
+
 TEST(NavigationTrial, LspWithASensorThatGivesNoSubgoalEstimatesStillReachesTheGoal) {
   // The noisy sensor has no per-cell outputs: every frontier keeps the optimistic default (Ps 1, costs 0).
   const Config cfg = ExactMazeConfig();
