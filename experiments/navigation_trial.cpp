@@ -99,8 +99,9 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // (planning::SuspectInspector); the trial ends "cut_off" only when none is left for cut_off_steps steps.  Where
 // the agent stands at the place the inspector leads it to, the map walls within inspect_reach of it become
 // openings (planning::OpeningsNear) that later doorway searches try too, each until the agent makes no
-// headway through it.  Planner "known" plans on TrueMap(world) in place of the map and of the walls the policy
-// adds (it has no frontiers to block and nothing to recover from).
+// headway through it.  Planner "known" plans on TrueMap(world) in place of the map, and adds no walls: it
+// blocks no frontier, puts no motion block, and where it finds no way (the goal cut off in the true world) it
+// does not recover.
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
@@ -112,7 +113,7 @@ class NavigationPolicy : public AgentPolicy {
         true_map_(kind == GoalPlanner::kKnown ? std::optional<mapping::MapView>(TrueMap(world)) : std::nullopt),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
-        blocks_(MotionBlocksFor(config, world, 1)),
+        blocks_(kind == GoalPlanner::kKnown ? std::nullopt : MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
         inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
 
@@ -140,7 +141,7 @@ class NavigationPolicy : public AgentPolicy {
       for (size_t i = 0; i < d->frontier_ids.size(); ++i) estimates_[d->frontier_ids[i]] = d->properties[i].ps;
     if (on_estimates) on_estimates(estimates_);
     doorway_.reset();
-    if (choice_.status != planning::PlanStatus::kFound) {
+    if (choice_.status != planning::PlanStatus::kFound && !true_map_) {
       ++recovery_steps_;
       choice_ = Recover(*state.view, view, graph, targets, at, state.step_length);
     }
@@ -164,7 +165,7 @@ class NavigationPolicy : public AgentPolicy {
     const bool stuck = (has_path && held) || stuck_.NoHeadway(trail, has_path, !has_path, at, step.distance);
     if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, choice_.path.points, trail.back(), at);
     if (!stuck_.Record(agent, stuck)) return step;
-    const int blocked = NearestFrontier(state.view->frontiers, at, block_reach_);
+    const int blocked = true_map_ ? -1 : NearestFrontier(state.view->frontiers, at, block_reach_);
     if (blocked >= 0)
       blocked_.GiveUp(blocked, state.view->frontiers, &at);
     else if (blocks_ && has_path && !trail.empty())

@@ -1,9 +1,9 @@
 #pragma once
 // One goal-directed navigation trial (paper Sec. V): one agent from the world's start to its goal on the
 // shared agent loop, every step a goal-directed planner (the optimistic baseline, Learned Subgoal Planning)
-// choosing the way on the map built so far.  The trial ends when the agent is within
-// navigation.goal_radius of the goal, is stuck, finds the goal cut off, or reaches the step cap; its cost is
-// the distance travelled.  A trial is a pure function of (world, config, planner, seed).
+// choosing the way on the map built so far (planner "known": on the true walls).  The trial ends when the
+// agent is within navigation.goal_radius of the goal, is stuck, finds the goal cut off, or reaches the step
+// cap; its cost is the distance travelled.  A trial is a pure function of (world, config, planner, seed).
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -32,8 +32,8 @@ struct NavigationTrialOptions {
   GoalPlanner planner = GoalPlanner::kOptimistic;
   int max_steps = 600;   // step cap (the reference's maze runs: 600 iterations)
   int mcmc_every = 5;    // MCMC cadence in steps (0: never)
-  // Called after every step with the map the planner used and the path so far, and once more with the final
-  // map (videos).
+  // Called after every step with the map built so far (the one the planner used, but for "known") and the path
+  // so far, and once more with the final map (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
   // Called every step before the planner with the loop's state and the frontier targets on offer (training
   // data: the frontiers to label).
@@ -49,8 +49,8 @@ struct NavigationResult {
   bool reached = false;           // within navigation.goal_radius of the goal
   int steps = 0;
   double distance = 0.0;          // travelled: the trial's cost
-  // The true world's shortest way from start to goal (lsp.clearance from walls, on the lsp.cell raster): what a
-  // planner that knew the maze would travel.  0 where the true world has none.
+  // The true world's shortest way from start to goal (lsp.clearance from walls, on the lsp.cell raster): about
+  // what a planner that knew the maze travels (planner "known" measures it).  0 where the true world has none.
   double shortest = 0.0;
   std::string end_reason;         // "goal", "stuck", "cut_off" (no way to the goal, nothing to explore), "step_cap"
   int nudges = 0;

@@ -90,7 +90,7 @@ TEST(NavigationTrial, TheOracleSkipsTheDeadEndTheOptimisticPlannerWalksInto) {
   EXPECT_GT(oracle_low, 55.0) << "the oracle's agent crossed x 30-60 only along the top corridor";
 }
 
-TEST(NavigationTrial, TheKnownPlannerTakesTheTrueShortestWayFromItsFirstStep) {
+TEST(NavigationTrial, TheKnownPlannerTakesTheTrueShortestWayWithoutANudge) {
   const core::World w = testing::DeadEndMaze();
   const Config cfg = ExactMazeConfig();
   NavigationTrialOptions o;
@@ -108,6 +108,16 @@ TEST(NavigationTrial, TheKnownPlannerTakesTheTrueShortestWayFromItsFirstStep) {
   EXPECT_GT(lowest, 55.0) << "the known planner's agent left the left corridor only along the top one";
   EXPECT_LT(known.distance, oracle.distance + 1.0);
   EXPECT_LT(known.distance, 1.05 * (known.shortest - cfg.navigation.goal_radius));
+  // A room with a pillar between the start and the goal: two rings (the room's wall and the pillar's).
+  core::World room = testing::RoomWorld(80, 40);
+  room.obstacles.push_back(testing::Rect(30, 12, 50, 28));  // gaps 12 wide above and below
+  room.start = {10, 20, 0};
+  room.goal = {70, 20};
+  const NavigationResult m = RunNavigationTrial(room, cfg, o, 7);
+  ASSERT_TRUE(m.reached) << m.end_reason;
+  EXPECT_EQ(m.nudges, 0);
+  EXPECT_TRUE(m.blocks.empty());
+  EXPECT_LT(m.distance, 1.1 * (m.shortest - cfg.navigation.goal_radius));
 }
 
 TEST(NavigationTrial, LspWithASensorThatGivesNoSubgoalEstimatesStillReachesTheGoal) {
