@@ -110,12 +110,16 @@ class NavigationPolicy : public AgentPolicy {
         options_(config.navigation),
         planning_(config.planning),
         planner_(CreateGoalPlanner(world, config, kind, &cells_)),
-        true_map_(kind == GoalPlanner::kKnown ? std::optional<mapping::MapView>(TrueMap(world)) : std::nullopt),
+        true_map_(kind == GoalPlanner::kKnown
+                      ? std::optional<mapping::MapView>(WithRegionWalls(TrueMap(world), region_))
+                      : std::nullopt),
         stuck_(1, config.search.stuck_steps, MotionFor(config, world).step_length),
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(kind == GoalPlanner::kKnown ? std::nullopt : MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
-        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {}
+        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {
+    if (true_map_) true_graph_.emplace(*true_map_, planning_, false);
+  }
 
   bool Plan(const LoopState& state, std::vector<std::vector<Vec2>>* paths) override {
     const Vec2 at = state.poses[0].position();
@@ -125,12 +129,16 @@ class NavigationPolicy : public AgentPolicy {
     // The reference's stuck test: the last stuck_window positions (this one among them) within stuck_span.
     if (planning::HeldInPlace((*state.trails)[0], at, options_.stuck_window, options_.stuck_span)) return End("stuck");
     blocked_.Update(state.view->frontiers);
-    mapping::MapView view = WithRegionWalls(true_map_ ? *true_map_ : *state.view, region_);
+    mapping::MapView own_view;
+    std::optional<planning::VisibilityGraph> own_graph;
     if (!true_map_) {
-      for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&view, e);
-      if (blocks_ && !blocks_->blocks().empty()) view = blocks_->With(view);
+      own_view = WithRegionWalls(*state.view, region_);
+      for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&own_view, e);
+      if (blocks_ && !blocks_->blocks().empty()) own_view = blocks_->With(own_view);
+      own_graph.emplace(own_view, planning_, false);
     }
-    const planning::VisibilityGraph graph(view, planning_, false);
+    const mapping::MapView& view = true_map_ ? *true_map_ : own_view;
+    const planning::VisibilityGraph& graph = true_graph_ ? *true_graph_ : *own_graph;
     const std::vector<planning::FrontierTarget> targets =
         true_map_ ? std::vector<planning::FrontierTarget>{} : UnprobedTargets(*state.view);
     if (on_plan) on_plan(state, targets);
@@ -264,7 +272,9 @@ class NavigationPolicy : public AgentPolicy {
   // its own initializer once planner_ was built (and the network's estimates never reached the planner).
   planning::CellAveragingEstimator* cells_ = nullptr;  // the "lsp" planner's estimator (owned by planner_)
   std::unique_ptr<planning::Planner> planner_;
-  std::optional<mapping::MapView> true_map_;  // planner "known" only: TrueMap(world)
+  // Planner "known" only: TrueMap(world) with the region's walls, and its graph (built once: the walls never move).
+  std::optional<mapping::MapView> true_map_;
+  std::optional<planning::VisibilityGraph> true_graph_;
   planning::StuckMonitor stuck_;
   planning::GivenUpFrontiers blocked_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
