@@ -59,6 +59,31 @@ double PolylineLength(const std::vector<Vec2>& points) {
   return length;
 }
 
+Vec2 PointAlong(const std::vector<Vec2>& polyline, double s) {
+  for (size_t i = 1; i < polyline.size(); ++i) {
+    const double len = Distance(polyline[i - 1], polyline[i]);
+    if (s <= len && len > 1e-12) return polyline[i - 1] + (polyline[i] - polyline[i - 1]) * (std::max(s, 0.0) / len);
+    s -= len;
+  }
+  return polyline.back();
+}
+
+std::vector<Vec2> SubPolyline(const std::vector<Vec2>& polyline, double s0, double s1) {
+  std::vector<Vec2> out;
+  double s = 0;
+  for (size_t i = 1; i < polyline.size(); ++i) {
+    const Vec2 a = polyline[i - 1], b = polyline[i];
+    const double len = Distance(a, b), next = s + len;
+    if (len > 1e-12 && next > s0 && s < s1) {
+      const auto at = [&](double t) { return a + (b - a) * ((std::clamp(t, s, next) - s) / len); };
+      if (out.empty()) out.push_back(at(s0));
+      out.push_back(at(s1));
+    }
+    s = next;
+  }
+  return out;
+}
+
 Aabb2 Bounds(const Ring& ring) {
   const double inf = std::numeric_limits<double>::infinity();
   return Bounds(ring, Aabb2{{inf, inf}, {-inf, -inf}});

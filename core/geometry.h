@@ -82,6 +82,10 @@ bool Contains(const Polygon& polygon, const Vec2& p);
 Aabb2 Bounds(const Ring& ring);
 Aabb2 Bounds(const std::vector<Vec2>& points, const Aabb2& start);
 double PolylineLength(const std::vector<Vec2>& points);  // summed segment lengths (0 for fewer than 2 points)
+// The point at arc length s along 'polyline' (one point or more; s is clamped to [0, length]).
+Vec2 PointAlong(const std::vector<Vec2>& polyline, double s);
+// The part of 'polyline' between arc lengths s0 < s1 (empty where they miss it).
+std::vector<Vec2> SubPolyline(const std::vector<Vec2>& polyline, double s0, double s1);
 
 double DistanceToSegment(const Vec2& p, const Segment2& s);
 // True if p projects strictly between s.a and s.b and lies less than 'tolerance' from the line through them

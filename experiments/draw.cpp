@@ -177,17 +177,19 @@ void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
     if (pts.size() > 1)
       cv::polylines(c.image, std::vector<std::vector<cv::Point>>{pts}, false, kAgentColours[a % 3], 1, cv::LINE_AA);
   }
-  for (const auto& f : map.frontiers) {  // dashed
-    const auto ps = extras.frontier_ps.find(f.id);
-    const double p = ps == extras.frontier_ps.end() ? -1.0 : std::clamp(ps->second, 0.0, 1.0);
-    const cv::Scalar colour = p < 0 ? cv::Scalar(200, 0, 200) : cv::Scalar(0, 190 * p, 220 * (1 - p));
-    for (size_t i = 1; i < f.points.size(); ++i) {
-      const core::Vec2 a = f.points[i - 1], b = f.points[i];
+  const auto dashed = [&](const std::vector<core::Vec2>& points, const cv::Scalar& colour, int thickness) {
+    for (size_t i = 1; i < points.size(); ++i) {
+      const core::Vec2 a = points[i - 1], b = points[i];
       const double len = core::Distance(a, b);
       for (double t = 0; t < len; t += 3.0)
         cv::line(c.image, c.Px(a + (b - a) * (t / len)), c.Px(a + (b - a) * (std::min(t + 1.8, len) / len)), colour,
-                 p < 0 ? 2 : 3, cv::LINE_AA);
+                 thickness, cv::LINE_AA);
     }
+  };
+  for (const auto& f : map.frontiers) dashed(f.points, cv::Scalar(200, 0, 200), 2);
+  for (const auto& e : extras.frontier_ps) {
+    const double p = std::clamp(e.ps, 0.0, 1.0);
+    dashed(e.points, cv::Scalar(0, 190 * p, 220 * (1 - p)), 3);
   }
   for (const auto& w : map.walls) cv::line(c.image, c.Px(w.pa), c.Px(w.pb), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
   for (const auto& b : extras.blocks) cv::line(c.image, c.Px(b.a), c.Px(b.b), cv::Scalar(0, 140, 255), 3, cv::LINE_AA);

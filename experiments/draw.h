@@ -9,6 +9,7 @@
 #include "core/world.h"
 #include "experiments/config.h"
 #include "mapping/mapping.h"
+#include "planning/lsp_planner.h"
 #include "sim/raycast.h"
 #include "sim/render.h"
 
@@ -30,7 +31,7 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
 // search picture: the motion blocks the planners were given (search.block_when_stuck).
 struct MapPictureExtras {
   std::optional<core::Vec2> goal;
-  std::map<int, double> frontier_ps;
+  std::vector<planning::FrontierEstimate> frontier_ps;  // drawn over the frontiers, red (Ps 0) to green (1)
   std::vector<core::Segment2> blocks;
 };
 

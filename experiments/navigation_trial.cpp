@@ -145,8 +145,7 @@ class NavigationPolicy : public AgentPolicy {
     const planning::PlanningProblem problem{&view, &graph, &targets, {at}, goal_};
     choice_ = planner_->Plan(problem).at(0);
     estimates_.clear();
-    if (const planning::LspDecision* d = planning::LastDecision(*planner_))
-      for (size_t i = 0; i < d->frontier_ids.size(); ++i) estimates_[d->frontier_ids[i]] = d->properties[i].ps;
+    if (const planning::LspDecision* d = planning::LastDecision(*planner_)) estimates_ = planning::Estimates(*d);
     if (on_estimates) on_estimates(estimates_);
     doorway_.reset();
     if (choice_.status != planning::PlanStatus::kFound && !true_map_) {
@@ -183,9 +182,9 @@ class NavigationPolicy : public AgentPolicy {
     return NudgeRandomly(motion, agent, state.step_length, rng);
   }
 
-  std::function<void(const std::map<int, double>&)> on_estimates;
+  std::function<void(const std::vector<planning::FrontierEstimate>&)> on_estimates;
   std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
-  const std::map<int, double>& estimates() const { return estimates_; }
+  const std::vector<planning::FrontierEstimate>& estimates() const { return estimates_; }
   const std::string& end_reason() const { return end_reason_; }
   int nudges() const { return nudges_; }
   int recovery_steps() const { return recovery_steps_; }
@@ -284,7 +283,7 @@ class NavigationPolicy : public AgentPolicy {
   std::vector<Vec2> failed_doorways_;  // middles of those it made no headway through
   std::vector<planning::Doorway> openings_;  // walls beside a place recovery led to, opened (OpeningsNear)
   planning::FrontierChoice choice_;
-  std::map<int, double> estimates_;
+  std::vector<planning::FrontierEstimate> estimates_;
   int cut_off_ = 0, nudges_ = 0, recovery_steps_ = 0, repeated_steps_ = 0;
   std::string end_reason_ = "step_cap";
 };

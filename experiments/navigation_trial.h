@@ -14,6 +14,7 @@
 #include "core/world.h"
 #include "experiments/agent_loop.h"
 #include "experiments/config.h"
+#include "planning/lsp_planner.h"
 #include "planning/planner.h"
 
 namespace toponav::experiments {
@@ -38,9 +39,9 @@ struct NavigationTrialOptions {
   // Called every step before the planner with the loop's state and the frontier targets on offer (training
   // data: the frontiers to label).
   std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
-  // Called every step (before the agent moves) with the frontiers a learned-subgoal planner ordered and their
-  // estimated Ps (frontier id -> Ps; empty for the optimistic planner, or when it planned optimistically).
-  std::function<void(const std::map<int, double>&)> on_estimates;
+  // Called every step (before the agent moves) with the frontier pieces a learned-subgoal planner estimated and
+  // their Ps (empty for the optimistic planner, or when it planned optimistically).
+  std::function<void(const std::vector<planning::FrontierEstimate>&)> on_estimates;
 };
 
 struct NavigationResult {
@@ -64,7 +65,7 @@ struct NavigationResult {
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;
   std::vector<core::Vec2> path;
-  std::map<int, double> frontier_ps;  // the last step's estimates (NavigationTrialOptions::on_estimates)
+  std::vector<planning::FrontierEstimate> frontier_ps;  // the last step's (NavigationTrialOptions::on_estimates)
 };
 
 NavigationResult RunNavigationTrial(const core::World& world, const Config& config,

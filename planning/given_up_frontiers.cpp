@@ -48,33 +48,6 @@ bool ClipToDisc(const Vec2& a, const Vec2& b, const Vec2& c, double radius, core
   return true;
 }
 
-// The part of 'polyline' between arc lengths s0 < s1.
-std::vector<Vec2> SubPolyline(const std::vector<Vec2>& polyline, double s0, double s1) {
-  std::vector<Vec2> out;
-  double s = 0;
-  for (size_t i = 1; i < polyline.size(); ++i) {
-    const Vec2 a = polyline[i - 1], b = polyline[i];
-    const double len = core::Distance(a, b), next = s + len;
-    if (len > 1e-12 && next > s0 && s < s1) {
-      const auto at = [&](double t) { return a + (b - a) * ((std::clamp(t, s, next) - s) / len); };
-      if (out.empty()) out.push_back(at(s0));
-      out.push_back(at(s1));
-    }
-    s = next;
-  }
-  return out;
-}
-
-// The point at arc length s along 'polyline' (2 points or more).
-Vec2 PointAt(const std::vector<Vec2>& polyline, double s) {
-  for (size_t i = 1; i < polyline.size(); ++i) {
-    const double len = core::Distance(polyline[i - 1], polyline[i]);
-    if (s <= len && len > 1e-12) return polyline[i - 1] + (polyline[i] - polyline[i - 1]) * (std::max(s, 0.0) / len);
-    s -= len;
-  }
-  return polyline.back();
-}
-
 // The longest run of 'f' whose sample points (every 'spacing' along it) lie 'reach' or more from 'edges', as arc
 // lengths [s0, s1]; s1 <= s0 when there is none.
 std::pair<double, double> LongestClearRun(const mapping::Frontier& f, const std::vector<core::Segment2>& edges,
@@ -85,7 +58,7 @@ std::pair<double, double> LongestClearRun(const mapping::Frontier& f, const std:
   double start = -1;
   for (int k = 0; k <= n + 1; ++k) {
     const double s = std::min(length, k * length / n);
-    const bool clear = k <= n && !Near(edges, PointAt(f.points, s), reach);
+    const bool clear = k <= n && !Near(edges, core::PointAlong(f.points, s), reach);
     if (clear && start < 0) start = s;
     if (!clear && start >= 0) {
       const double end = std::min(length, (k - 1) * length / n);
@@ -111,9 +84,9 @@ std::vector<mapping::Frontier> GivenUpFrontiers::Unprobed(const std::vector<mapp
       out.push_back(f);  // nothing probed near it
     } else if (s1 > s0) {
       mapping::Frontier piece = f;
-      piece.points = SubPolyline(f.points, s0, s1);
+      piece.points = core::SubPolyline(f.points, s0, s1);
       piece.length = s1 - s0;
-      piece.midpoint = PointAt(f.points, 0.5 * (s0 + s1));
+      piece.midpoint = core::PointAlong(f.points, 0.5 * (s0 + s1));
       if (s0 > 0) piece.front_turn = 0.0;  // a cut end is bounded (by the probed part, a wall to the planners)
       if (s1 < length) piece.back_turn = 0.0;
       out.push_back(std::move(piece));

@@ -13,6 +13,7 @@ const core::OptionFields<LspOptions>& LspOptions::Fields() {
       {"max_frontiers", &O::max_frontiers, 1, kMaxExactFrontiers},
       {"cell", &O::cell, 0.05, 20.0},
       {"clearance", &O::clearance, 0.0, 50.0},
+      {"piece_length", &O::piece_length, 0.0, 1000.0},
   };
   return fields;
 }
@@ -30,11 +31,12 @@ class OracleEstimator : public SubgoalEstimator {
   TrueFreeSpace truth_;
 };
 
-// The view with every frontier but 'keep' as a wall: the optimistic path then leads through 'keep'.
-mapping::MapView MaskOtherFrontiers(const mapping::MapView& view, int keep) {
+// The view with every piece but 'keep' as a wall: the optimistic path then leads through 'keep'.
+mapping::MapView MaskOtherPieces(const mapping::MapView& view, const std::vector<mapping::Frontier>& pieces,
+                                 size_t keep) {
   mapping::MapView v = view;
-  for (const auto& f : view.frontiers)
-    if (f.id != keep) AddWalls(&v, f.points);
+  for (size_t k = 0; k < pieces.size(); ++k)
+    if (k != keep) AddWalls(&v, pieces[k].points);
   return v;
 }
 
@@ -52,9 +54,10 @@ class LspPlanner : public Planner {
                   "LSP plans for one agent with a goal");
     decision_ = {};
     FrontierChoice c;
-    const int subgoal = ChooseSubgoal(p);
+    const int piece = ChooseSubgoal(p);
+    const int subgoal = piece >= 0 ? pieces_[size_t(piece)].id : -1;
     if (subgoal >= 0) {
-      const mapping::MapView masked = MaskOtherFrontiers(*p.view, subgoal);
+      const mapping::MapView masked = MaskOtherPieces(*p.view, pieces_, size_t(piece));
       c.path = VisibilityGraph(masked, planning_, false).Plan(p.agents[0], *p.goal);
       if (!c.path)
         for (const auto& t : *p.targets)
@@ -73,9 +76,19 @@ class LspPlanner : public Planner {
   const LspDecision& decision() const { return decision_; }
 
  private:
-  // The frontier id that begins the best order, or -1 (the goal is known, or nothing to order).
+  // The piece (index into pieces_) that begins the best order, or -1 (the goal is known, or nothing to order).
   int ChooseSubgoal(const PlanningProblem& p) {
-    const std::vector<const mapping::Frontier*> frontiers = TargetFrontiers(*p.view, *p.targets);
+    pieces_.clear();
+    for (const mapping::Frontier& f : p.view->frontiers)
+      for (mapping::Frontier& piece : FrontierPieces(f, o_.piece_length)) pieces_.push_back(std::move(piece));
+    std::vector<const mapping::Frontier*> frontiers;
+    std::vector<int> index;
+    for (const mapping::Frontier* f : TargetFrontiers(*p.view, *p.targets))
+      for (size_t k = 0; k < pieces_.size(); ++k)
+        if (pieces_[k].id == f->id) {
+          frontiers.push_back(&pieces_[k]);
+          index.push_back(int(k));
+        }
     if (frontiers.empty()) return -1;
     const SubgoalGrid grid(*p.view, frontiers, p.agents[0], *p.goal, o_.cell, region_);
     if (grid.goal_known()) return -1;
@@ -87,11 +100,11 @@ class LspPlanner : public Planner {
     const std::vector<int> chosen = SelectFrontiers(problem, o_.max_frontiers);
     const Ordering best = BestOrdering(Restrict(problem, chosen));
     for (size_t f = 0; f < frontiers.size(); ++f) {
-      decision_.frontier_ids.push_back(frontiers[f]->id);
+      decision_.pieces.push_back(*frontiers[f]);
       decision_.properties.push_back(problem.properties[f]);
     }
     for (int k : best.order) decision_.order.push_back(chosen[size_t(k)]);
-    return decision_.order.empty() ? -1 : decision_.frontier_ids[size_t(decision_.order.front())];
+    return decision_.order.empty() ? -1 : index[size_t(decision_.order.front())];
   }
 
   std::unique_ptr<SubgoalEstimator> estimator_;
@@ -100,9 +113,28 @@ class LspPlanner : public Planner {
   std::optional<core::Aabb2> region_;
   std::string name_;
   LspDecision decision_;
+  std::vector<mapping::Frontier> pieces_;
 };
 
 }  // namespace
+
+std::vector<mapping::Frontier> FrontierPieces(const mapping::Frontier& frontier, double length) {
+  const double total = core::PolylineLength(frontier.points);
+  const int n = length > 0 ? int(std::ceil(total / length - 1e-9)) : 1;
+  if (n <= 1) return {frontier};
+  std::vector<mapping::Frontier> out;
+  for (int k = 0; k < n; ++k) {
+    mapping::Frontier piece;
+    piece.id = frontier.id;
+    piece.points = core::SubPolyline(frontier.points, total * k / n, total * (k + 1) / n);
+    piece.length = total / n;
+    piece.midpoint = core::PointAlong(frontier.points, total * (k + 0.5) / n);
+    out.push_back(std::move(piece));
+  }
+  out.front().front_turn = frontier.front_turn;
+  out.back().back_turn = frontier.back_turn;
+  return out;
+}
 
 std::unique_ptr<SubgoalEstimator> CreateOracleEstimator(const core::World& world, double cell, double clearance) {
   return std::make_unique<OracleEstimator>(world, cell, clearance);
@@ -112,6 +144,13 @@ std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> esti
                                           const PlannerOptions& planning, std::optional<core::Aabb2> region,
                                           std::string name) {
   return std::make_unique<LspPlanner>(std::move(estimator), options, planning, region, std::move(name));
+}
+
+std::vector<FrontierEstimate> Estimates(const LspDecision& decision) {
+  std::vector<FrontierEstimate> out;
+  for (size_t i = 0; i < decision.pieces.size(); ++i)
+    out.push_back({decision.pieces[i].points, decision.properties[i].ps});
+  return out;
 }
 
 const LspDecision* LastDecision(const Planner& planner) {

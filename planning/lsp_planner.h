@@ -34,6 +34,9 @@ struct LspOptions {
   int max_frontiers = 12;     // frontiers ordered exactly; more are cut by SelectFrontiers (at most 16)
   double cell = 1.0;          // raster cell, world units
   double clearance = 1.0;     // the oracle's true free space keeps this far from walls
+  // Frontiers longer than this are cut into pieces of equal length, each ordered as a subgoal of its own, so
+  // the agent crosses a long frontier where the estimates say the way goes on (world units; 0: never cut).
+  double piece_length = 35.0;
   static const core::OptionFields<LspOptions>& Fields();  // YAML keys (under lsp:) and their ranges
 };
 
@@ -42,13 +45,24 @@ std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> esti
                                           const PlannerOptions& planning, std::optional<core::Aabb2> region,
                                           std::string name);
 
-// What the last Plan call decided, for pictures and tests: every frontier estimated, its (clamped)
-// properties, and the order chosen over the ones worth ordering (indices into them, the subgoal first).
+// 'frontier' cut into the fewest pieces of equal length at most 'length' (0: not cut); each keeps its id.
+std::vector<mapping::Frontier> FrontierPieces(const mapping::Frontier& frontier, double length);
+
+// What the last Plan call decided, for pictures and tests: every frontier piece estimated (each with its
+// frontier's id), its (clamped) properties, and the order chosen over the ones worth ordering (indices into
+// them, the subgoal first).
 struct LspDecision {
-  std::vector<int> frontier_ids;
+  std::vector<mapping::Frontier> pieces;
   std::vector<SubgoalProperties> properties;
   std::vector<int> order;
 };
 const LspDecision* LastDecision(const Planner& planner);  // nullptr for planners other than LSP
+
+// A frontier piece and its estimated Ps (pictures and traces of LSP trials).
+struct FrontierEstimate {
+  std::vector<core::Vec2> points;
+  double ps = 0.0;
+};
+std::vector<FrontierEstimate> Estimates(const LspDecision& decision);
 
 }  // namespace toponav::planning

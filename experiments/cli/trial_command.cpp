@@ -42,9 +42,9 @@ std::ofstream OpenTrace(const std::string& path, const std::string& header) {
 
 // One row of the navigation trace (columns as its header in RunNavigationCommand).
 std::string NavigationTraceRow(int step, const core::Vec2& at, const core::Vec2& goal, const mapping::MapView& v,
-                               const std::map<int, double>& ps) {
+                               const std::vector<planning::FrontierEstimate>& ps) {
   double min_ps = ps.empty() ? std::nan("") : 1.0;
-  for (const auto& [id, p] : ps) min_ps = std::min(min_ps, p);
+  for (const auto& e : ps) min_ps = std::min(min_ps, e.ps);
   return fmt::format("{},{:.2f},{:.2f},{:.2f},{},{},{:.3f},{},{},{:.1f}\n", step, at.x, at.y,
                      core::Distance(at, goal), v.frontiers.size(), ps.size(), min_ps, v.vertices.size(),
                      v.walls.size(), v.known_area());
@@ -67,9 +67,9 @@ int RunNavigationCommand(const TrialArgs& a) {
   n.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
   int step = 0;
   experiments::MapPictureExtras extras{w.goal, {}, {}};
-  n.on_estimates = [&](const std::map<int, double>& ps) { extras.frontier_ps = ps; };
+  n.on_estimates = [&](const std::vector<planning::FrontierEstimate>& ps) { extras.frontier_ps = ps; };
   std::ofstream trace = OpenTrace(
-      a.trace, "step,x,y,distance_to_goal,frontiers,estimated_frontiers,min_ps,map_vertices,map_walls,known_area");
+      a.trace, "step,x,y,distance_to_goal,frontiers,estimated_pieces,min_ps,map_vertices,map_walls,known_area");
   if (trace.is_open()) trace << "\n";
   if (a.frames_every > 0 || trace.is_open())
     n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {

@@ -82,6 +82,21 @@ TEST(Geometry, PolylineLengthSumsSegments) {
   EXPECT_DOUBLE_EQ(PolylineLength({{0, 0}, {3, 4}, {3, 10}}), 11.0);
 }
 
+TEST(Geometry, PointAlongAndSubPolylineFollowArcLengthRoundTurns) {
+  const std::vector<Vec2> l{{0, 0}, {3, 4}, {3, 10}};  // 5 then 6 long
+  EXPECT_NEAR(Distance(PointAlong(l, 2.5), {1.5, 2}), 0, 1e-12);
+  EXPECT_NEAR(Distance(PointAlong(l, 8), {3, 7}), 0, 1e-12);
+  EXPECT_NEAR(Distance(PointAlong(l, -1), {0, 0}), 0, 1e-12) << "clamped to the ends";
+  EXPECT_NEAR(Distance(PointAlong(l, 99), {3, 10}), 0, 1e-12);
+  const std::vector<Vec2> mid = SubPolyline(l, 2.5, 8);
+  ASSERT_EQ(mid.size(), 3u) << "keeps the turn";
+  EXPECT_NEAR(Distance(mid[0], {1.5, 2}), 0, 1e-12);
+  EXPECT_NEAR(Distance(mid[1], {3, 4}), 0, 1e-12);
+  EXPECT_NEAR(Distance(mid[2], {3, 7}), 0, 1e-12);
+  EXPECT_NEAR(PolylineLength(SubPolyline(l, 0, 11)), 11.0, 1e-12);
+  EXPECT_TRUE(SubPolyline(l, 12, 13).empty());
+}
+
 TEST(Geometry, WrapAngleMapsIntoHalfOpenRange) {
   EXPECT_NEAR(WrapAngle(3 * kPi), -kPi, 1e-12);
   EXPECT_NEAR(WrapAngle(-kPi / 2), -kPi / 2, 1e-12);

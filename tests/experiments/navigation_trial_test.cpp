@@ -128,7 +128,7 @@ TEST(NavigationTrial, LspWithASensorThatGivesNoSubgoalEstimatesStillReachesTheGo
   const NavigationResult r = RunNavigationTrial(SmallMaze(7), cfg, o, 7);
   EXPECT_TRUE(r.reached) << r.end_reason;
   EXPECT_EQ(r.planner, "lsp");
-  for (const auto& [id, ps] : r.frontier_ps) EXPECT_EQ(ps, 1.0);
+  for (const auto& e : r.frontier_ps) EXPECT_EQ(e.ps, 1.0);
   EXPECT_EQ(ParseGoalPlanner("lsp"), GoalPlanner::kLsp);
   EXPECT_FALSE(ParseGoalPlanner("greedy"));
 }
@@ -145,7 +145,7 @@ TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
   const NavigationResult r = RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, {}, 7004), cfg, o, 1);
   ASSERT_FALSE(r.frontier_ps.empty());
   bool estimated = false;
-  for (const auto& [id, ps] : r.frontier_ps) estimated = estimated || ps < 0.99;
+  for (const auto& e : r.frontier_ps) estimated = estimated || e.ps < 0.99;
   EXPECT_TRUE(estimated) << "every frontier kept the optimistic default";
 }
 
@@ -240,8 +240,11 @@ TEST(NavigationTrial, AnAgentWalkingALoopInPlaceAsItsPlanFlipsIsNudged) {
   // Tuning maze 7367, the oracle with the simulated sensor: pressed at a wall the map lacks, the agent's way
   // flipped to another for one step each time the map was sampled again (every 5 steps), so it walked a loop
   // 1.9 across (1.8 out, 1.2 and 0.8 back, two presses).  The forward steps made headway, so the stuck count
-  // restarted every loop: no nudge, no give-up, and the run ended "stuck" after 150 steps.
-  const NavigationResult r = RunMaze("noisy.yaml", 7367, GoalPlanner::kOracle, 400);  // the goal after 323 steps
+  // restarted every loop: no nudge, no give-up, and the run ended "stuck" after 150 steps.  (Whole frontiers: in
+  // pieces the oracle takes another way there.)
+  Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/noisy.yaml");
+  cfg.lsp.piece_length = 0;
+  const NavigationResult r = RunMaze(cfg, 7367, GoalPlanner::kOracle, 400);  // the goal after 323 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
   EXPECT_GT(r.nudges, 0);
 }
@@ -262,8 +265,9 @@ TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) 
   // joined to the wall's far end, and the wall drawn along the side wall and across the opening beyond its end
   // closed the only way to the goal (every frontier's true Ps 0; the run ended at the 600-step cap).  The
   // maze configs draw only the shorter wall (mapping.wall_past_vertex_tolerance).  (The first-stage network's
-  // maps.)
+  // maps, whole frontiers: in pieces the oracle finds the way round that wall.)
   Config cfg = FirstStageMazeConfig();
+  cfg.lsp.piece_length = 0;
   ASSERT_GT(cfg.mapping.wall_past_vertex_tolerance, 0.0);
   const core::World world = sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7249);
   NavigationTrialOptions o;
