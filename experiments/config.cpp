@@ -176,7 +176,7 @@ void Validate(const Config& c) {
   InSection(c, "", [&] { c.render.Validate(); });
   InSection(c, "", [&] { c.motion.Validate(); });
   InSection(c, "", [&] { core::CheckRanges(c.navigation, NavigationOptions::Fields(), "navigation."); });
-  InSection(c, "", [&] { core::CheckRanges(c.lsp, planning::LspOptions::Fields(), "lsp."); });
+  InSection(c, "", [&] { c.lsp.Validate(); });
   InSection(c, "", [&] { core::CheckRanges(c.open_world, OpenWorldOptions::Fields(), "open_world."); });
   InSection(c, "", [&] { core::CheckRanges(c.picture, PictureOptions::Fields(), "picture."); });
   InSection(c, "", [&] { core::CheckRanges(c.bench, BenchOptions::Fields(), "bench."); });

@@ -186,7 +186,11 @@ void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
                  thickness, cv::LINE_AA);
     }
   };
-  for (const auto& f : map.frontiers) dashed(f.points, cv::Scalar(200, 0, 200), 2);
+  for (const auto& f : map.frontiers) {
+    const auto& e = extras.frontier_ps;
+    if (std::none_of(e.begin(), e.end(), [&](const planning::FrontierEstimate& x) { return x.frontier_id == f.id; }))
+      dashed(f.points, cv::Scalar(200, 0, 200), 2);
+  }
   for (const auto& e : extras.frontier_ps) {
     const double p = std::clamp(e.ps, 0.0, 1.0);
     dashed(e.points, cv::Scalar(0, 190 * p, 220 * (1 - p)), 3);

@@ -18,6 +18,13 @@ const core::OptionFields<LspOptions>& LspOptions::Fields() {
   return fields;
 }
 
+void LspOptions::Validate() const {
+  core::CheckRanges(*this, Fields(), "lsp.");
+  if (piece_length > 0 && piece_length < cell)
+    throw core::ConfigError("<options>", "lsp.piece_length", std::to_string(piece_length),
+                            "must be 0 (frontiers whole) or at least lsp.cell (" + std::to_string(cell) + ")");
+}
+
 namespace {
 
 class OracleEstimator : public SubgoalEstimator {
@@ -45,6 +52,7 @@ class LspPlanner : public Planner {
   LspPlanner(std::unique_ptr<SubgoalEstimator> estimator, const LspOptions& o, const PlannerOptions& planning,
              std::optional<core::Aabb2> region, std::string name)
       : estimator_(std::move(estimator)), o_(o), planning_(planning), region_(region), name_(std::move(name)) {
+    o.Validate();
     TOPONAV_CHECK(estimator_ && o.max_frontiers >= 1 && o.max_frontiers <= kMaxExactFrontiers && o.cell > 0,
                   "LSP planner options: max_frontiers " << o.max_frontiers << ", cell " << o.cell);
   }
@@ -149,7 +157,7 @@ std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> esti
 std::vector<FrontierEstimate> Estimates(const LspDecision& decision) {
   std::vector<FrontierEstimate> out;
   for (size_t i = 0; i < decision.pieces.size(); ++i)
-    out.push_back({decision.pieces[i].points, decision.properties[i].ps});
+    out.push_back({decision.pieces[i].id, decision.pieces[i].points, decision.properties[i].ps});
   return out;
 }
 

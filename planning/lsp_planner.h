@@ -38,6 +38,7 @@ struct LspOptions {
   // the agent crosses a long frontier where the estimates say the way goes on (world units; 0: never cut).
   double piece_length = 35.0;
   static const core::OptionFields<LspOptions>& Fields();  // YAML keys (under lsp:) and their ranges
+  void Validate() const;  // throws core::ConfigError ("lsp.piece_length", ...)
 };
 
 // 'region': the area the world lies in (the raster's extent); 'planning': for the masked path's graph.
@@ -45,7 +46,8 @@ std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> esti
                                           const PlannerOptions& planning, std::optional<core::Aabb2> region,
                                           std::string name);
 
-// 'frontier' cut into the fewest pieces of equal length at most 'length' (0: not cut); each keeps its id.
+// 'frontier' cut into the fewest pieces of equal length at most 'length' (0, or a frontier no longer than it:
+// the frontier itself); each keeps its id, and a cut end has turn 0.
 std::vector<mapping::Frontier> FrontierPieces(const mapping::Frontier& frontier, double length);
 
 // What the last Plan call decided, for pictures and tests: every frontier piece estimated (each with its
@@ -60,6 +62,7 @@ const LspDecision* LastDecision(const Planner& planner);  // nullptr for planner
 
 // A frontier piece and its estimated Ps (pictures and traces of LSP trials).
 struct FrontierEstimate {
+  int frontier_id = 0;
   std::vector<core::Vec2> points;
   double ps = 0.0;
 };

@@ -234,7 +234,7 @@ expect_contains("${OUT}" "planner lsp")
 file(STRINGS ${WORK}/lsp_trial/trace.csv nav_trace)
 list(LENGTH nav_trace nav_rows)
 list(GET nav_trace 0 nav_header)
-if(NOT nav_rows EQUAL 8 OR NOT nav_header MATCHES "distance_to_goal,frontiers,estimated_frontiers,min_ps")
+if(NOT nav_rows EQUAL 8 OR NOT nav_header MATCHES "distance_to_goal,frontiers,estimated_pieces,min_ps")
   message(FATAL_ERROR "navigation trace: ${nav_rows} lines, header ${nav_header}")
 endif()
 # eval-sensor --subgoal: the trained network's frontier estimates scored along an optimistic maze run

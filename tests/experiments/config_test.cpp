@@ -253,6 +253,13 @@ TEST(Config, CrossFieldRulesNameTheFile) {
   EXPECT_EQ(e.key(), "worlds.office_park.min_building_gap");
 }
 
+TEST(Config, AFrontierPieceShorterThanTheLspCellIsAnError) {
+  const auto e = ErrorOf("lsp:\n  cell: 2\n  piece_length: 0.5\n");
+  EXPECT_EQ(e.file(), "configs/bad.yaml");
+  EXPECT_EQ(e.key(), "lsp.piece_length");
+  EXPECT_NO_THROW(ParseConfig("lsp:\n  piece_length: 0\n", "k.yaml")) << "0: frontiers whole";
+}
+
 TEST(Config, UnknownWorldKindIsNamed) {
   const auto e = ErrorOf("demo:\n  kinds: [labyrinth, castle]\n");
   EXPECT_EQ(e.key(), "demo.kinds");

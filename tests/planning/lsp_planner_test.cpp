@@ -124,6 +124,7 @@ TEST(LspPlanner, TheOracleCrossesALongFrontierWhereTheWayGoesOnNotWhereTheStraig
   for (size_t i = 0; i < corners.size(); ++i) s.view.vertices.push_back({int(i), corners[i], {}, 5});
   for (auto [i, j] : {std::pair{3, 0}, {0, 1}, {1, 2}})
     s.view.walls.push_back({i, j, corners[size_t(i)], corners[size_t(j)], 0.9});
+  s.view.frontiers.push_back({5, {a, Vec2{4, 0}}, {2, 0}, 4.0});  // a sliver, no target: pieces and targets differ
   s.view.frontiers.push_back({1, {c, d}, (c + d) * 0.5, 60.0});
   s.targets = FrontierTargets(s.view, s.options);
   ASSERT_EQ(s.targets.size(), 1u);
