@@ -1,7 +1,6 @@
 #pragma once
 // Top-down pictures (PNG).  North is up; one world unit is PictureOptions::pixels_per_unit pixels.
 #include <memory>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>

@@ -6,7 +6,6 @@
 // cap; its cost is the distance travelled.  A trial is a pure function of (world, config, planner, seed).
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
