@@ -193,7 +193,7 @@ void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
   }
   for (const auto& e : extras.frontier_ps) {
     const double p = std::clamp(e.ps, 0.0, 1.0);
-    dashed(e.points, cv::Scalar(0, 190 * p, 220 * (1 - p)), 3);
+    dashed(e.points, cv::Scalar(0, 190 * p, 220 * (1 - p)), e.subgoal ? 6 : 3);  // the subgoal thicker
   }
   for (const auto& w : map.walls) cv::line(c.image, c.Px(w.pa), c.Px(w.pb), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
   for (const auto& b : extras.blocks) cv::line(c.image, c.Px(b.a), c.Px(b.b), cv::Scalar(0, 140, 255), 3, cv::LINE_AA);

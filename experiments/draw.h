@@ -30,7 +30,8 @@ void DrawObservationPicture(const core::World& world, const core::Pose2& pose,
 // search picture: the motion blocks the planners were given (search.block_when_stuck).
 struct MapPictureExtras {
   std::optional<core::Vec2> goal;
-  std::vector<planning::FrontierEstimate> frontier_ps;  // drawn in place of their frontiers, red (Ps 0) to green (1)
+  // Drawn in place of their frontiers, red (Ps 0) to green (1), the subgoal thicker.
+  std::vector<planning::FrontierEstimate> frontier_ps;
   std::vector<core::Segment2> blocks;
 };
 

@@ -157,7 +157,8 @@ std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> esti
 std::vector<FrontierEstimate> Estimates(const LspDecision& decision) {
   std::vector<FrontierEstimate> out;
   for (size_t i = 0; i < decision.pieces.size(); ++i)
-    out.push_back({decision.pieces[i].id, decision.pieces[i].points, decision.properties[i].ps});
+    out.push_back({decision.pieces[i].id, decision.pieces[i].points, decision.properties[i].ps, false});
+  if (!decision.order.empty()) out[size_t(decision.order.front())].subgoal = true;
   return out;
 }
 

@@ -65,6 +65,7 @@ struct FrontierEstimate {
   int frontier_id = 0;
   std::vector<core::Vec2> points;
   double ps = 0.0;
+  bool subgoal = false;  // the piece that begins the chosen order
 };
 std::vector<FrontierEstimate> Estimates(const LspDecision& decision);
 

@@ -43,10 +43,17 @@ std::ofstream OpenTrace(const std::string& path, const std::string& header) {
 std::string NavigationTraceRow(int step, const core::Vec2& at, const core::Vec2& goal, const mapping::MapView& v,
                                const std::vector<planning::FrontierEstimate>& ps) {
   double min_ps = ps.empty() ? std::nan("") : 1.0;
-  for (const auto& e : ps) min_ps = std::min(min_ps, e.ps);
-  return fmt::format("{},{:.2f},{:.2f},{:.2f},{},{},{:.3f},{},{},{:.1f}\n", step, at.x, at.y,
-                     core::Distance(at, goal), v.frontiers.size(), ps.size(), min_ps, v.vertices.size(),
-                     v.walls.size(), v.known_area());
+  core::Vec2 subgoal{std::nan(""), std::nan("")};
+  double subgoal_ps = std::nan("");
+  for (const auto& e : ps) {
+    min_ps = std::min(min_ps, e.ps);
+    if (!e.subgoal) continue;
+    subgoal = core::PointAlong(e.points, 0.5 * core::PolylineLength(e.points));
+    subgoal_ps = e.ps;
+  }
+  return fmt::format("{},{:.2f},{:.2f},{:.2f},{},{},{:.3f},{:.2f},{:.2f},{:.3f},{},{},{:.1f}\n", step, at.x, at.y,
+                     core::Distance(at, goal), v.frontiers.size(), ps.size(), min_ps, subgoal.x, subgoal.y,
+                     subgoal_ps, v.vertices.size(), v.walls.size(), v.known_area());
 }
 
 // A goal-directed navigation trial with the named planner (trial.png, a frame every --frames-every steps, and
@@ -68,7 +75,9 @@ int RunNavigationCommand(const TrialArgs& a) {
   experiments::MapPictureExtras extras{w.goal, {}, {}};
   n.on_estimates = [&](const std::vector<planning::FrontierEstimate>& ps) { extras.frontier_ps = ps; };
   std::ofstream trace = OpenTrace(
-      a.trace, "step,x,y,distance_to_goal,frontiers,estimated_pieces,min_ps,map_vertices,map_walls,known_area");
+      a.trace,
+      "step,x,y,distance_to_goal,frontiers,estimated_pieces,min_ps,subgoal_x,subgoal_y,subgoal_ps,map_vertices,"
+      "map_walls,known_area");
   if (trace.is_open()) trace << "\n";
   if (a.frames_every > 0 || trace.is_open())
     n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {

@@ -62,6 +62,11 @@ TEST(LspPlanner, TheOracleHeadsUpTheStemNotIntoTheDeadEndTheOptimisticPlannerTak
   EXPECT_EQ(Ids(*d), (std::vector<int>{1, 2}));
   EXPECT_EQ(d->properties[0].ps, 0.0);
   EXPECT_EQ(d->order, (std::vector<int>{1})) << "the dead end (Ps 0) is not worth ordering";
+  const std::vector<FrontierEstimate> e = Estimates(*d);
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_FALSE(e[0].subgoal);
+  EXPECT_TRUE(e[1].subgoal) << "the stem begins the order";
+  EXPECT_EQ(e[1].frontier_id, 2);
   // The optimistic planner's straight way to the goal goes into the bottom corridor.
   const VisibilityGraph graph(s.view, s.options, false);
   const PlanningProblem p{&s.view, &graph, &s.targets, {s.world.start.position()}, s.world.goal};
