@@ -52,9 +52,8 @@ class LspPlanner : public Planner {
   LspPlanner(std::unique_ptr<SubgoalEstimator> estimator, const LspOptions& o, const PlannerOptions& planning,
              std::optional<core::Aabb2> region, std::string name)
       : estimator_(std::move(estimator)), o_(o), planning_(planning), region_(region), name_(std::move(name)) {
-    o.Validate();
-    TOPONAV_CHECK(estimator_ && o.max_frontiers >= 1 && o.max_frontiers <= kMaxExactFrontiers && o.cell > 0,
-                  "LSP planner options: max_frontiers " << o.max_frontiers << ", cell " << o.cell);
+    o.Validate();  // the ranges of max_frontiers, cell and piece_length
+    TOPONAV_CHECK(estimator_, "an LSP planner without an estimator");
   }
 
   std::vector<FrontierChoice> Plan(const PlanningProblem& p) override {
