@@ -42,6 +42,7 @@ const core::OptionFields<LearnedSensorOptions>& LearnedSensorOptions::Fields() {
       {"sigma_range", &O::sigma_range, 0.01, 100.0},
       {"sigma_bearing", &O::sigma_bearing, 1e-4, 3.0},
       {"threads", &O::threads, 0, 256},
+      {"mirror_average", &O::mirror_average},
   };
   return fields;
 }
@@ -65,7 +66,7 @@ std::unique_ptr<core::VertexDetectorInterface> LearnedDetector(const LearnedSens
   decode.sigma_bearing = o.sigma_bearing;
   decode.sub_bin = o.sub_bin;
   learning::SelectBackend(false, o.threads);
-  return learning::CreateLearnedDetector(o.model, decode, o.subgoal_model);
+  return learning::CreateLearnedDetector(o.model, decode, o.subgoal_model, o.mirror_average);
 }
 
 }  // namespace

@@ -35,6 +35,8 @@ struct LearnedSensorOptions {
   double sigma_range = 5.0;      // the covariance reported with each detection (world units, radians)
   double sigma_bearing = 0.125;
   int threads = 1;               // CPU threads for the network (a bench runs one trial per core); 0: LibTorch's default
+  bool mirror_average = false;   // each network also runs on the panorama mirrored in bearing, outputs averaged
+                                 // (learning/mirror_average.h): a second pass a step
   bool sub_bin = false;          // not a key: set from open_world.sub_bin by experiments::SensorFor
   static const core::OptionFields<LearnedSensorOptions>& Fields();  // the keys and their ranges
 };

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "learning/mirror_average.h"
 #include "learning/vertex_model.h"
 
 namespace toponav::learning {
@@ -29,41 +30,52 @@ core::CellGrid SubgoalCells(const SubgoalOutput& s) {
 
 class LearnedDetector : public core::VertexDetectorInterface {
  public:
-  LearnedDetector(VertexModel model, const DecodeOptions& decode, std::optional<VertexModel> subgoal)
-      : model_(std::move(model)), decode_(decode), subgoal_(std::move(subgoal)) {}
+  LearnedDetector(VertexModel model, const DecodeOptions& decode, std::optional<VertexModel> subgoal, bool mirror)
+      : model_(std::move(model)), decode_(decode), subgoal_(std::move(subgoal)), mirror_(mirror) {}
 
   core::Observation Detect(const core::Panorama& image, const core::DetectionContext& context) override {
     core::Observation z;
     z.pose = context.pose;
     z.agent = context.agent;
-    if (subgoal_ && context.goal) {
-      const GridOutput out = model_.Predict(image);
+    std::optional<core::Panorama> mirrored;
+    if (mirror_) mirrored = MirroredPanorama(image);
+    const bool own_cells = model_.options().subgoal && context.goal && !subgoal_;
+    if (own_cells) {
+      auto [out, cells] = PredictWithGoal(model_, image, mirrored, *context.goal);
       z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
-      z.cells = SubgoalCells(subgoal_->PredictWithGoal(image, GoalInView::FromAgentFrame(*context.goal)).second);
+      z.cells = SubgoalCells(cells);
       return z;
     }
-    if (!model_.options().subgoal || !context.goal) {
-      const GridOutput out = model_.Predict(image);
-      z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
-      return z;
-    }
-    const auto [out, subgoal] = model_.PredictWithGoal(image, GoalInView::FromAgentFrame(*context.goal));
+    GridOutput out = model_.Predict(image);
+    if (mirrored) out = Mean(out, MirroredBack(model_.Predict(*mirrored)));
     z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
-    z.cells = SubgoalCells(subgoal);
+    if (subgoal_ && context.goal)
+      z.cells = SubgoalCells(PredictWithGoal(*subgoal_, image, mirrored, *context.goal).second);
     return z;
   }
 
  private:
+  static std::pair<GridOutput, SubgoalOutput> PredictWithGoal(const VertexModel& m, const core::Panorama& image,
+                                                              const std::optional<core::Panorama>& mirrored,
+                                                              const core::Vec2& goal) {
+    const GoalInView g = GoalInView::FromAgentFrame(goal);
+    auto out = m.PredictWithGoal(image, g);
+    if (!mirrored) return out;
+    const auto back = m.PredictWithGoal(*mirrored, {g.range, -g.bearing});
+    return {Mean(out.first, MirroredBack(back.first)), Mean(out.second, MirroredBack(back.second))};
+  }
+
   VertexModel model_;
   DecodeOptions decode_;
   std::optional<VertexModel> subgoal_;
+  bool mirror_;
 };
 
 }  // namespace
 
 std::unique_ptr<core::VertexDetectorInterface> CreateLearnedDetector(const std::string& model_path,
                                                                      const DecodeOptions& decode,
-                                                                     const std::string& subgoal_path) {
+                                                                     const std::string& subgoal_path, bool mirror) {
   std::optional<VertexModel> subgoal;
   if (!subgoal_path.empty()) {
     subgoal = VertexModel::Load(subgoal_path);
@@ -71,7 +83,7 @@ std::unique_ptr<core::VertexDetectorInterface> CreateLearnedDetector(const std::
       throw core::DataError(subgoal_path, "sensor.subgoal_model is a vertex network without subgoal outputs "
                                           "(not trained with train.subgoal)");
   }
-  return std::make_unique<LearnedDetector>(VertexModel::Load(model_path), decode, std::move(subgoal));
+  return std::make_unique<LearnedDetector>(VertexModel::Load(model_path), decode, std::move(subgoal), mirror);
 }
 
 }  // namespace toponav::learning

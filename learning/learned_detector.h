@@ -15,9 +15,11 @@ namespace toponav::learning {
 // Throws core::DataError naming 'model_path' if it is missing or not a vertex-network file.  With
 // 'subgoal_path', a second network -- a subgoal model -- fills the cells wherever a goal is given, and the
 // vertices still come from the first (its vertex outputs stay the ones it was chosen for); a file that is not
-// a subgoal model is a core::DataError naming it.
+// a subgoal model is a core::DataError naming it.  'mirror_average': each network also runs on the mirrored
+// panorama and the two outputs are averaged (learning/mirror_average.h).
 std::unique_ptr<core::VertexDetectorInterface> CreateLearnedDetector(const std::string& model_path,
                                                                      const DecodeOptions& decode,
-                                                                     const std::string& subgoal_path = "");
+                                                                     const std::string& subgoal_path = "",
+                                                                     bool mirror_average = false);
 
 }  // namespace toponav::learning

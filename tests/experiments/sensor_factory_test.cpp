@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "experiments/trial.h"
+#include "learning/mirror_average.h"
 #include "learning/peaks.h"
 #include "learning/vertex_model.h"
 #include "sim/render.h"
@@ -101,6 +102,36 @@ TEST(SensorFactory, TheLearnedKindRunsTheModelOnTheRenderedPanorama) {
   learning::VertexModel(tiny, 5).Save(model);
   EXPECT_EQ(RunSearchTrial(w, explore, t, 7).steps, 3);
   std::filesystem::remove(model);
+}
+
+TEST(SensorFactory, MirrorAveragingDecodesTheMeanOfThePlainAndTheMirroredBackOutputs) {
+  const Config c = ParseConfig("sensor:\n  kind: learned\n  model: " TOPONAV_SOURCE_DIR
+                               "/models/vertex_net_cpu.pt\n  mirror_average: true\n", "x.yaml");
+  EXPECT_TRUE(c.sensor.learned.mirror_average);
+  EXPECT_FALSE(ParseConfig("sensor:\n  kind: learned\n  model: m.pt\n", "x.yaml").sensor.learned.mirror_average)
+      << "off by default";
+  const core::World w = sim::GenerateLabyrinth({}, 3);
+  const core::Observation z = CreateSensor(c.sensor, {&w, {}, std::nullopt, 1})->Observe(w.start, 0);
+  const learning::VertexModel m = learning::VertexModel::Load(c.sensor.learned.model);
+  const core::Panorama image = sim::Renderer(w, {}).Render(w.start);
+  const learning::GridOutput plain = m.Predict(image);
+  const learning::GridOutput mean =
+      learning::Mean(plain, learning::MirroredBack(m.Predict(learning::MirroredPanorama(image))));
+  learning::DecodeOptions decode;
+  decode.sigma_range = c.sensor.learned.sigma_range;
+  decode.sigma_bearing = c.sensor.learned.sigma_bearing;
+  const auto want = learning::DecodeDetections(mean.vertex, mean.labels, mean.grid, decode);
+  ASSERT_EQ(z.detections.size(), want.size());
+  ASSERT_GT(want.size(), 3u);
+  for (size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(z.detections[i].bearing, want[i].bearing);
+    EXPECT_EQ(z.detections[i].range, want[i].range);
+    EXPECT_FLOAT_EQ(z.detections[i].labels[1], want[i].labels[1]);
+  }
+  const auto alone = learning::DecodeDetections(plain.vertex, plain.labels, plain.grid, decode);
+  bool differs = alone.size() != want.size();
+  for (size_t i = 0; i < want.size() && !differs; ++i) differs = alone[i].labels[1] != want[i].labels[1];
+  EXPECT_TRUE(differs) << "the mirrored pass changes what is reported";
 }
 
 TEST(SensorFactory, ASubgoalModelBesideTheVertexModelFillsTheCellsAndLeavesTheVerticesToIt) {
