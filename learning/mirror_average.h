@@ -1,7 +1,8 @@
 #pragma once
 // Test-time mirroring: the network also sees the panorama mirrored in bearing (the goal's bearing negated),
-// and its outputs, mirrored back, are averaged with the plain ones.  The networks are trained on mirrored
-// examples (train.mirror), so the mirrored view is one they know; the average costs a second pass.
+// and its outputs, mirrored back, are averaged with the plain ones.  A mirrored panorama is what the world seen
+// in a mirror would give (train.mirror trains on such examples; the maze network was, the search network was
+// not); the average is mirror-equivariant and costs a second pass.
 #include "core/image.h"
 #include "learning/vertex_model.h"
 

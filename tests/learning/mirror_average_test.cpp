@@ -58,7 +58,10 @@ TEST(LearnedDetector, WithMirrorAveragingTheMirroredPanoramaGivesTheMirroredDete
     EXPECT_NEAR(twin->labels[1], d.labels[1], 1e-5);
   }
   for (int col : {0, 3, 77, 128})
-    EXPECT_NEAR(m.cells.at(20, (256 - col) % 256, 0), z.cells.at(20, col, 0), 1e-5) << col;
+    for (int channel : {0, 1, 2})  // Ps and the two costs
+      EXPECT_NEAR(m.cells.at(20, (256 - col) % 256, channel), z.cells.at(20, col, channel),
+                  1e-5 * std::max(1.0f, std::abs(z.cells.at(20, col, channel))))
+          << col << " " << channel;
   const auto plain = CreateLearnedDetector(path, {})->Detect(image, {{}, 0, core::Vec2{30.0, 40.0}});
   EXPECT_GT(std::abs(plain.cells.at(20, 3, 0) - z.cells.at(20, 3, 0)), 1e-6) << "the mirrored pass counts";
 }
