@@ -1,6 +1,7 @@
 #include "learning/mirror_average.h"
 
 #include "core/error.h"
+#include "learning/internal/columns.h"
 
 namespace toponav::learning {
 
@@ -11,12 +12,7 @@ template <class T>
 std::vector<T> FlipColumns(const std::vector<T>& in, int rows, int cols, size_t channels) {
   TOPONAV_CHECK(in.size() == size_t(rows) * size_t(cols) * channels, "a grid of " << in.size() << " values");
   std::vector<T> out(in.size());
-  for (int row = 0; row < rows; ++row)
-    for (int c = 0; c < cols; ++c) {
-      const size_t from = size_t(row) * size_t(cols) + size_t(c);
-      const size_t to = size_t(row) * size_t(cols) + size_t((cols - c) % cols);
-      for (size_t k = 0; k < channels; ++k) out[to * channels + k] = in[from * channels + k];
-    }
+  internal::MoveColumns(in, rows, cols, channels, internal::MirrorColumn, &out);
   return out;
 }
 

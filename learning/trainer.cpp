@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/geometry.h"
 #include "core/rng.h"
+#include "learning/internal/columns.h"
 #include "learning/learning.h"
 
 namespace toponav::learning {
@@ -20,18 +21,9 @@ namespace toponav::learning {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-namespace {
+using internal::MoveColumns;
 
-// Moves column c of a row-major rows x cols grid of 'channels' values a cell to column to(c, cols).
-template <class T, class To>
-void MoveColumns(const std::vector<T>& in, int rows, int cols, size_t channels, const To& to, std::vector<T>* out) {
-  for (int row = 0; row < rows; ++row)
-    for (int c = 0; c < cols; ++c) {
-      const size_t from = size_t(row) * size_t(cols) + size_t(c);
-      const size_t dest = size_t(row) * size_t(cols) + size_t(to(c, cols));
-      for (size_t k = 0; k < channels; ++k) (*out)[dest * channels + k] = in[from * channels + k];
-    }
-}
+namespace {
 
 // The example with column c of each of its grids (the image, the vertex labels, the subgoal labels) moved to
 // column to(c, the grid's width); the label values and the goal as they were.
@@ -82,7 +74,7 @@ TrainingExample Rolled(const TrainingExample& e, int cols) {
 }
 
 TrainingExample Mirrored(const TrainingExample& e) {
-  TrainingExample r = ColumnsMoved(e, [](int c, int width) { return (width - c) % width; });
+  TrainingExample r = ColumnsMoved(e, internal::MirrorColumn);
   const uint8_t right = 1 + uint8_t(core::VertexLabel::kRightGap), left = 1 + uint8_t(core::VertexLabel::kLeftGap);
   for (auto& v : r.labels.cells) v = v == right ? left : v == left ? right : v;
   r.goal.bearing = core::WrapAngle(-e.goal.bearing);
