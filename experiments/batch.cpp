@@ -74,6 +74,7 @@ json SearchJson(const TrialId& id, const TrialResult& r) {
   j["nudges"] = r.nudges;
   j["give_ups"] = r.give_ups;
   j["inspections"] = r.inspections;
+  j["sealed_steps"] = r.sealed_steps;
   j["blocks"] = r.blocks.size();
   j["end_reason"] = r.end_reason;
   j["wall_time_s"] = r.wall_time_s;

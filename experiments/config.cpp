@@ -39,6 +39,7 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
       {"inspect_standoff", &O::inspect_standoff, 0.1, 1000.0},
       {"inspect_unwalled", &O::inspect_unwalled, 0, 1000000},
       {"dropped_wall_steps", &O::dropped_wall_steps, 0, 100000},
+      {"sealed_reach", &O::sealed_reach, 0.0, 1000.0},
   };
   return fields;
 }

@@ -93,6 +93,10 @@ struct SearchOptions {
   int dropped_wall_steps = 0;     // > 0: a frontier lying along a wall the map held for this many steps and
                                   // has left out since (planning::DroppedWalls: 80 % of it within 1.5 units)
                                   // is taken for that wall, no target; 0: off
+  double sealed_reach = 0.0;      // > 0, closed worlds: a search whose known space stops further than this
+                                  // (world units) short of a side of the world's bounds is not over: agents
+                                  // look for the map wall that seals the rest off (planning::UnreachedSide,
+                                  // planning::SuspectInspector) while there are suspects left; 0: off
   // What the tour (search.tour, one agent) knows of the space past each frontier
   // (planning/frontier_exploration.h): "none" (every frontier alike), "learned" (the exploration cost a
   // subgoal network -- sensor.subgoal_model, or the sensor's model itself, trained with train.subgoal on

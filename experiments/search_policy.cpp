@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "planning/frontier_exploration.h"
+#include "planning/sealed_region.h"
 
 namespace toponav::experiments {
 
@@ -46,6 +47,26 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
   inspection.reach = config.search.give_up_distance;
   inspection.looks = config.search.give_up_steps;
   if (inspection.max_bend > 0 || inspection.unwalled_detections > 0) inspector_.emplace(inspection);
+  if (search_.sealed_reach > 0 && world.has_boundary())
+    sealed_.emplace(config.navigation.inspect_reach, planning_.inflation_radius + planning_.clearance,
+                    config.navigation.inspect_reach);
+}
+
+bool SearchPolicy::ChooseSealedSuspects(const mapping::MapView& view, const planning::VisibilityGraph& graph,
+                                        const std::vector<Vec2>& agents) {
+  const std::optional<Vec2> side = planning::UnreachedSide(view.known_space, bounds_, search_.sealed_reach, agents[0]);
+  if (!side) return false;
+  std::vector<planning::FrontierChoice> choices;
+  bool any = false;
+  for (const Vec2& agent : agents) {
+    choices.push_back(sealed_->Choose(view, graph, agent, *side, {}));
+    any = any || choices.back().status == planning::PlanStatus::kFound;
+  }
+  if (!any) return false;
+  for (auto& c : choices) c.frontier_id = kSealedSuspect;
+  choices_ = std::move(choices);
+  sealed_choices_ += int(agents.size());
+  return true;
 }
 
 void SearchPolicy::ObserveCells(const LoopState& state) {
@@ -67,12 +88,19 @@ std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapVi
   if (!dropped && !close) return targets;
   // A frontier along a wall the map dropped, and in open worlds a building's last side, is no target.
   const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(view, targets);
-  std::vector<planning::FrontierTarget> kept;
+  std::vector<planning::FrontierTarget> kept, along_dropped;
   for (size_t i = 0; i < targets.size(); ++i) {
-    if (dropped && dropped_walls_.TakenForWall(*frontiers[i], view.walls, search_.dropped_wall_steps)) continue;
     if (close && planning::ClosesWallChain(*frontiers[i], view, planning_)) continue;
+    if (dropped && dropped_walls_.TakenForWall(*frontiers[i], view.walls, search_.dropped_wall_steps)) {
+      along_dropped.push_back(targets[i]);
+      continue;
+    }
     kept.push_back(targets[i]);
   }
+  // With nothing else left while known space misses a side of a closed world's bounds, a frontier along a
+  // dropped wall may be the way on (the wall was a false one across it).
+  if (kept.empty() && sealed_ && planning::UnreachedSide(view.known_space, bounds_, search_.sealed_reach, bounds_.min))
+    return along_dropped;
   return kept;
 }
 
@@ -130,11 +158,14 @@ bool SearchPolicy::Plan(const LoopState& state, std::vector<std::vector<Vec2>>* 
     targets_ = inspector_->Targets(view, graph, problem.agents, PathBudget(state, search_.give_up_steps));
     original_ = targets_;
   }
-  choices_ = planner_->Plan(problem);
-  commitment_.Apply(graph, targets_, problem.agents, &choices_);
+  const bool sealed = targets_.empty() && sealed_ && ChooseSealedSuspects(view, graph, problem.agents);
+  if (!sealed) {
+    choices_ = planner_->Plan(problem);
+    commitment_.Apply(graph, targets_, problem.agents, &choices_);
+  }
   if (on_plan) on_plan(state, targets_, choices_);
-  if (Ended(targets_, view)) return false;
-  CountDwelling(state, problem.agents);
+  if (!sealed && Ended(targets_, view)) return false;
+  if (!sealed) CountDwelling(state, problem.agents);
   for (size_t a = 0; a < choices_.size(); ++a)
     if (choices_[a].status == planning::PlanStatus::kFound)
       (*paths)[a].assign(choices_[a].path.points.begin() + 1, choices_[a].path.points.end());
@@ -153,7 +184,9 @@ sim::StepResult SearchPolicy::AfterStep(const LoopState& state, int agent, const
   if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, c.path.points, trail.back(), step.pose.position());
   // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward giving
   // it up as if it stood next to it; all of it counts as probed.
-  if (stuck && found && planning::VertexInspector::IsInspection(c.frontier_id))
+  if (c.frontier_id == kSealedSuspect) {
+    // The suspect inspector retires suspects the agent came near; one it cannot get to stays until the cap.
+  } else if (stuck && found && planning::VertexInspector::IsInspection(c.frontier_id))
     inspector_->GiveUp(c.frontier_id);
   else if (stuck && found && dwell_.Count(c.frontier_id))
     given_up_.GiveUp(c.frontier_id, state.view->frontiers);

@@ -12,7 +12,9 @@
 // (planning::DroppedWalls); with search.inspect_bend and search.inspect_unwalled, once no frontier is left
 // agents look from close by at the map vertices that walls run straight through and (open worlds) those the
 // map lacks walls for (planning::VertexInspector) before the search ends, those they can reach and look from
-// within the steps left.
+// within the steps left.  With search.sealed_reach, in closed worlds a search whose known space stops short of a
+// side of the world's bounds goes on: agents look at the map walls that may seal the rest off
+// (planning::UnreachedSide, planning::SuspectInspector) until none is left to look at.
 // With search.exploration_estimate, one agent's tour knows what lies past each frontier
 // (planning/frontier_exploration.h).
 #include <functional>
@@ -26,6 +28,7 @@
 #include "planning/dropped_walls.h"
 #include "planning/given_up_frontiers.h"
 #include "planning/lsp_planner.h"
+#include "planning/map_suspects.h"
 #include "planning/motion_blocks.h"
 #include "planning/planner.h"
 #include "planning/search_policy.h"
@@ -54,14 +57,21 @@ class SearchPolicy : public AgentPolicy {
   int nudges() const { return nudges_; }
   int give_ups() const { return given_up_.given_up(); }
   int inspections() const { return inspector_ ? inspector_->targeted() : 0; }
+  // Agent-steps spent heading for a wall that may seal the world off (search.sealed_reach).
+  int sealed_steps() const { return sealed_choices_; }
   // Where agents made no headway (search.block_when_stuck): the walls given to the planners.
   std::vector<core::Segment2> blocks() const { return blocks_ ? blocks_->blocks() : std::vector<core::Segment2>{}; }
 
  private:
+  static constexpr int kSealedSuspect = -2;  // the frontier id of a choice headed for a suspect wall
   std::vector<planning::FrontierTarget> Targets(const mapping::MapView& view);
   bool Ended(const std::vector<planning::FrontierTarget>& targets, const mapping::MapView& view);
   void CountDwelling(const LoopState& state, const std::vector<core::Vec2>& agents);
   void ObserveCells(const LoopState& state);  // "learned": this step's network outputs to the estimator
+  // search.sealed_reach: each agent's way to a suspect wall while known space misses a side of the bounds;
+  // false (choices_ untouched) when it reaches them all or no suspect is left.
+  bool ChooseSealedSuspects(const mapping::MapView& view, const planning::VisibilityGraph& graph,
+                            const std::vector<core::Vec2>& agents);
 
   SearchOptions search_;
   planning::PlannerOptions planning_;
@@ -74,6 +84,8 @@ class SearchPolicy : public AgentPolicy {
   planning::StuckMonitor stuck_;
   std::optional<planning::MotionBlocks> blocks_;  // search.block_when_stuck only
   std::optional<planning::VertexInspector> inspector_;  // search.inspect_bend or inspect_unwalled only
+  std::optional<planning::SuspectInspector> sealed_;     // search.sealed_reach, closed worlds only
+  int sealed_choices_ = 0;                               // agent-steps headed for a suspect wall
   std::unique_ptr<planning::SubgoalEstimator> exploration_;  // search.exploration_estimate, one agent only
   planning::CellAveragingEstimator* cells_ = nullptr;        // "learned": exploration_, fed the observations
   std::string model_;                                         // its sensor's model file (errors)

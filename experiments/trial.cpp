@@ -74,6 +74,7 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   r.nudges = policy.nudges();
   r.give_ups = policy.give_ups();
   r.inspections = policy.inspections();
+  r.sealed_steps = policy.sealed_steps();
   r.blocks = policy.blocks();
   r.iou = SearchIoU(world, loop.final_view);
   r.success = r.explored && r.iou > config.search.success_iou;

@@ -44,6 +44,8 @@ struct TrialResult {
   int inspections = 0;            // map vertices agents were sent to look at before the end: walls run straight
                                   // through them (search.inspect_bend) or the map lacks their walls
                                   // (search.inspect_unwalled)
+  int sealed_steps = 0;           // agent-steps spent looking for a wall that seals part of a closed world off
+                                  // (search.sealed_reach)
   std::vector<core::Segment2> blocks;  // motion blocks added (search.block_when_stuck)
   std::string end_reason;         // "explored", "unreachable" (frontiers left, none reachable), "step_cap"
   double wall_time_s = 0.0;

@@ -181,6 +181,9 @@ TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   EXPECT_EQ(c.search.dropped_wall_steps, 0) << "off unless set";
   EXPECT_EQ(ParseConfig("search:\n  dropped_wall_steps: 10\n", "x.yaml").search.dropped_wall_steps, 10);
   EXPECT_EQ(ErrorOf("search:\n  dropped_wall_steps: -1\n").key(), "search.dropped_wall_steps");
+  EXPECT_DOUBLE_EQ(c.search.sealed_reach, 0.0) << "off unless set";
+  EXPECT_DOUBLE_EQ(ParseConfig("search:\n  sealed_reach: 10\n", "x.yaml").search.sealed_reach, 10.0);
+  EXPECT_EQ(ErrorOf("search:\n  sealed_reach: -1\n").key(), "search.sealed_reach");
   EXPECT_EQ(c.search.unreachable_steps, 9);
   EXPECT_DOUBLE_EQ(c.search.switch_ratio, 2.0);
   EXPECT_DOUBLE_EQ(c.search.push_distance, SearchOptions{}.push_distance) << "unset keys keep their defaults";
