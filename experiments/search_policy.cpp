@@ -54,7 +54,8 @@ SearchPolicy::SearchPolicy(const core::World& world, const Config& config, int n
 
 bool SearchPolicy::ChooseSealedSuspects(const mapping::MapView& view, const planning::VisibilityGraph& graph,
                                         const std::vector<Vec2>& agents) {
-  const std::optional<Vec2> side = planning::UnreachedSide(view.known_space, bounds_, search_.sealed_reach, agents[0]);
+  const std::optional<Vec2> side =
+      planning::UnreachedSide(view.known_space, bounds_, search_.sealed_reach, agents[0]);
   if (!side) return false;
   std::vector<planning::FrontierChoice> choices;
   bool any = false;
@@ -99,7 +100,8 @@ std::vector<planning::FrontierTarget> SearchPolicy::Targets(const mapping::MapVi
   }
   // With nothing else left while known space misses a side of a closed world's bounds, a frontier along a
   // dropped wall may be the way on (the wall was a false one across it).
-  if (kept.empty() && sealed_ && planning::UnreachedSide(view.known_space, bounds_, search_.sealed_reach, bounds_.min))
+  if (kept.empty() && sealed_ &&
+      planning::UnreachedSide(view.known_space, bounds_, search_.sealed_reach, bounds_.min))
     return along_dropped;
   return kept;
 }
@@ -183,12 +185,12 @@ sim::StepResult SearchPolicy::AfterStep(const LoopState& state, int agent, const
   const bool stuck = stuck_.NoHeadway(trail, has_path, no_way, step.pose.position(), step.distance);
   if (blocks_ && has_path && !trail.empty()) blocks_->Record(agent, c.path.points, trail.back(), step.pose.position());
   // An agent that cannot get to its frontier (its path runs into a wall the map lacks) counts toward giving
-  // it up as if it stood next to it; all of it counts as probed.
-  if (c.frontier_id == kSealedSuspect) {
-    // The suspect inspector retires suspects the agent came near; one it cannot get to stays until the cap.
-  } else if (stuck && found && planning::VertexInspector::IsInspection(c.frontier_id))
+  // it up as if it stood next to it; all of it counts as probed.  A suspect wall (search.sealed_reach) is the
+  // suspect inspector's to retire, once an agent came near it.
+  const bool target = found && c.frontier_id != kSealedSuspect;
+  if (stuck && target && planning::VertexInspector::IsInspection(c.frontier_id))
     inspector_->GiveUp(c.frontier_id);
-  else if (stuck && found && dwell_.Count(c.frontier_id))
+  else if (stuck && target && dwell_.Count(c.frontier_id))
     given_up_.GiveUp(c.frontier_id, state.view->frontiers);
   if (!stuck_.Record(agent, stuck)) return step;
   // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.

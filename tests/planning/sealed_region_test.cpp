@@ -7,7 +7,9 @@ namespace {
 
 const core::Aabb2 kBounds{{-100, -50}, {100, 50}};
 
-core::Polygon Box(double x0, double y0, double x1, double y1) { return {core::Ring{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}}; }
+core::Polygon Box(double x0, double y0, double x1, double y1) {
+  return {core::Ring{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
 
 TEST(SealedRegion, KnownSpaceReachingEverySideOfTheBoundsLeavesNoneUnreached) {
   // An L of two known pieces that together come within 10 units of all four sides.
