@@ -94,6 +94,7 @@ json NavigationJson(const TrialId& id, const NavigationResult& r) {
   j["nudges"] = r.nudges;
   j["recovery_steps"] = r.recovery_steps;
   j["repeated_steps"] = r.repeated_steps;
+  j["scan_steps"] = r.scan_steps;
   j["longest_hold"] = r.longest_hold;
   j["blocks"] = r.blocks.size();
   j["end_reason"] = r.end_reason;
@@ -128,7 +129,7 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
   n.on_step = on_step;
   const NavigationResult r = RunNavigationTrial(w, config, n, id.seed, view);
   *paths = {r.path};
-  *extras = {w.goal, r.frontier_ps, r.blocks};
+  *extras = {w.goal, r.frontier_ps, r.blocks, r.scan_walls};
   return NavigationJson(id, r);
 }
 

@@ -64,6 +64,7 @@ const core::OptionFields<NavigationOptions>& NavigationOptions::Fields() {
       {"inspect_reach", &O::inspect_reach, 0.1, 1000.0},
       {"doorway_min_width", &O::doorway_min_width, 0.1, 1000.0},
       {"doorway_max_width", &O::doorway_max_width, 0.1, 1000.0},
+      {"scan_when_held", &O::scan_when_held, 0, 100000},
   };
   return fields;
 }
@@ -139,6 +140,11 @@ void ValidateAcrossSections(const Config& c) {
     throw core::ConfigError(c.source, "planning.clearance", std::to_string(c.planning.clearance),
                             "must be in [motion.agent_radius + 0.25, 0.9 * planning.inflation_radius] = [" +
                                 std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  const int held = c.navigation.scan_when_held;
+  if (held > 0 && held >= c.navigation.stuck_window)
+    throw core::ConfigError(c.source, "navigation.scan_when_held", std::to_string(held),
+                            "must be 0 (off) or below navigation.stuck_window (" +
+                                std::to_string(c.navigation.stuck_window) + "): a held agent scans before it is stuck");
   if (c.bench.first_seed > core::kMaxSeed - uint64_t(c.bench.num_seeds))
     throw core::ConfigError(c.source, "bench.first_seed", std::to_string(c.bench.first_seed),
                             "first_seed + num_seeds must stay within [0, " + std::to_string(core::kMaxSeed) + "]");

@@ -197,6 +197,8 @@ void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
   }
   for (const auto& w : map.walls) cv::line(c.image, c.Px(w.pa), c.Px(w.pb), cv::Scalar(0, 0, 0), 2, cv::LINE_AA);
   for (const auto& b : extras.blocks) cv::line(c.image, c.Px(b.a), c.Px(b.b), cv::Scalar(0, 140, 255), 3, cv::LINE_AA);
+  for (const auto& w : extras.scan_walls)
+    cv::line(c.image, c.Px(w.a), c.Px(w.b), cv::Scalar(160, 160, 0), 2, cv::LINE_AA);
   for (const auto& v : map.vertices)
     cv::circle(c.image, c.Px(v.position), 3, cv::Scalar(0, 0, 0), cv::FILLED, cv::LINE_AA);
   for (const auto& v : map.rejected) cv::circle(c.image, c.Px(v.position), 4, cv::Scalar(0, 0, 230), 2, cv::LINE_AA);

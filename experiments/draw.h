@@ -33,11 +33,12 @@ struct MapPictureExtras {
   // Drawn in place of their frontiers, red (Ps 0) to green (1), the subgoal thicker.
   std::vector<planning::FrontierEstimate> frontier_ps;
   std::vector<core::Segment2> blocks;
+  std::vector<core::Segment2> scan_walls;  // a held agent's range scans (navigation.scan_when_held)
 };
 
 // A map over the true world: true walls faint, known space shaded, frontiers dashed (magenta; with an
 // estimated Ps from red at 0 to green at 1), map walls and vertices black, rejected vertices red, the agents'
-// paths in their own colours, motion blocks orange, the goal (if given) a red disc.
+// paths in their own colours, motion blocks orange, range-scan walls teal, the goal (if given) a red disc.
 void DrawMapPicture(const core::World& world, const mapping::MapView& map,
                     const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
                     const std::string& png_path, const MapPictureExtras& extras = {});

@@ -1,6 +1,7 @@
 #include "experiments/navigation_trial.h"
 
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -12,8 +13,10 @@
 #include "planning/lsp_planner.h"
 #include "planning/map_suspects.h"
 #include "planning/motion_blocks.h"
+#include "planning/scan_walls.h"
 #include "planning/search_policy.h"
 #include "sim/paths.h"
+#include "sim/raycast.h"
 
 namespace toponav::experiments {
 
@@ -68,6 +71,12 @@ mapping::MapView WithRegionWalls(const mapping::MapView& view, const core::Aabb2
 constexpr double kRepeatTolerance = 0.05;
 constexpr int kRepeatLaps = 2;
 
+// A held agent's range scans (navigation.scan_when_held): rays a full turn round, hit points this far apart
+// or closer on one wall (a maze's walls stand 14 apart, its openings are wider), walls straight to within this.
+constexpr int kScanRays = 360;
+constexpr double kScanLink = 2.0;
+constexpr double kScanTolerance = 0.3;
+
 // The nearest frontier within 'reach' of p (-1: none).
 int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2& p, double reach) {
   int best = -1;
@@ -93,6 +102,9 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // search.block_when_stuck, steps that make no headway along the path, and a nudge with no frontier near to
 // block, put a short wall across the way (planning::MotionBlocks): a true wall the map lacks inside known
 // space.
+// With navigation.scan_when_held, an agent held that many steps (as the stuck test counts) plans from then on
+// with the walls its own range sensing shows round it besides the map's (planning::ScanWalls, every scan's
+// merged): the true wall the map lacks that holds it is then a wall to its planner.
 // Where the map cuts the goal off (a goal-directed trial's goal is reachable: some wall of the map is false),
 // Recover() tries in turn a way through a doorway hypothesis (planning/doorways.h), the blocked frontiers and
 // motion blocks taken back, and a frontier or a suspected false wall to look at from close by
@@ -105,7 +117,8 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 class NavigationPolicy : public AgentPolicy {
  public:
   NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
-      : goal_(world.goal),
+      : world_(world),
+        goal_(world.goal),
         region_(world.bounds),
         options_(config.navigation),
         planning_(config.planning),
@@ -117,7 +130,8 @@ class NavigationPolicy : public AgentPolicy {
         blocked_(config.search.give_up_reach, config.search.give_up_probe_radius),
         blocks_(kind == GoalPlanner::kKnown ? std::nullopt : MotionBlocksFor(config, world, 1)),
         block_reach_(config.search.give_up_distance),
-        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach) {
+        inspector_(options_.inspect_reach, planning_.inflation_radius + planning_.clearance, options_.inspect_reach),
+        scan_range_(MotionFor(config, world).avoid_window) {
     if (true_map_) true_graph_.emplace(*true_map_, planning_, false);
   }
 
@@ -129,12 +143,14 @@ class NavigationPolicy : public AgentPolicy {
     // The reference's stuck test: the last stuck_window positions (this one among them) within stuck_span.
     if (planning::HeldInPlace((*state.trails)[0], at, options_.stuck_window, options_.stuck_span)) return End("stuck");
     blocked_.Update(state.view->frontiers);
+    if (!true_map_ && options_.scan_when_held > 0) Scan(state, at);
     mapping::MapView own_view;
     std::optional<planning::VisibilityGraph> own_graph;
     if (!true_map_) {
       own_view = WithRegionWalls(*state.view, region_);
       for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&own_view, e);
       if (blocks_ && !blocks_->blocks().empty()) own_view = blocks_->With(own_view);
+      for (const auto& w : scan_walls_.walls()) planning::AddFreeStandingWall(&own_view, w);
       own_graph.emplace(own_view, planning_, false);
     }
     const mapping::MapView& view = true_map_ ? *true_map_ : own_view;
@@ -189,12 +205,29 @@ class NavigationPolicy : public AgentPolicy {
   int nudges() const { return nudges_; }
   int recovery_steps() const { return recovery_steps_; }
   int repeated_steps() const { return repeated_steps_; }
+  int scan_steps() const { return scan_steps_; }
+  const std::vector<core::Segment2>& scan_walls() const { return scan_walls_.walls(); }
   // Every motion block added, those Recover took back too (none without search.block_when_stuck).
   std::vector<core::Segment2> added_blocks() const {
     return blocks_ ? blocks_->added() : std::vector<core::Segment2>{};
   }
 
  private:
+  // Once the agent is held navigation.scan_when_held steps, a range scan from where it stands every step.
+  void Scan(const LoopState& state, const Vec2& at) {
+    const std::vector<Vec2>& trail = (*state.trails)[0];
+    scanning_ = scanning_ || planning::HeldInPlace(trail, at, options_.scan_when_held, options_.stuck_span);
+    if (!scanning_) return;
+    if (!ray_caster_) ray_caster_ = std::make_unique<sim::RayCaster>(world_);
+    std::vector<planning::ScanRay> rays(kScanRays);
+    for (int j = 0; j < kScanRays; ++j) {
+      const double angle = 2.0 * core::kPi * j / kScanRays;
+      rays[size_t(j)] = {angle, ray_caster_->CastRay(at, angle, scan_range_)};
+    }
+    scan_walls_.Add(planning::ScanWalls(at, rays, scan_range_, kScanLink, kScanTolerance));
+    ++scan_steps_;
+  }
+
   // Where the planner finds no way to the goal: the cheapest way through a doorway hypothesis; else, if some
   // frontiers were given up or motion blocks added, they are all taken back (no way this step); else a
   // frontier or a suspected false wall to look at; where the agent stands at that already, the map walls
@@ -263,6 +296,7 @@ class NavigationPolicy : public AgentPolicy {
     return false;
   }
 
+  const core::World& world_;
   Vec2 goal_;
   core::Aabb2 region_;
   NavigationOptions options_;
@@ -284,7 +318,11 @@ class NavigationPolicy : public AgentPolicy {
   std::vector<planning::Doorway> openings_;  // walls beside a place recovery led to, opened (OpeningsNear)
   planning::FrontierChoice choice_;
   std::vector<planning::FrontierEstimate> estimates_;
-  int cut_off_ = 0, nudges_ = 0, recovery_steps_ = 0, repeated_steps_ = 0;
+  double scan_range_;
+  bool scanning_ = false;
+  std::unique_ptr<sim::RayCaster> ray_caster_;      // built at the first scan
+  planning::ScanWallSet scan_walls_{kScanLink, kScanTolerance};  // every scan's walls, merged
+  int cut_off_ = 0, nudges_ = 0, recovery_steps_ = 0, repeated_steps_ = 0, scan_steps_ = 0;
   std::string end_reason_ = "step_cap";
 };
 
@@ -330,6 +368,8 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
   r.nudges = policy.nudges();
   r.recovery_steps = policy.recovery_steps();
   r.repeated_steps = policy.repeated_steps();
+  r.scan_steps = policy.scan_steps();
+  r.scan_walls = policy.scan_walls();
   r.longest_hold = planning::LongestHold(loop.paths.at(0), config.navigation.stuck_span);
   r.blocks = policy.added_blocks();
   r.path = loop.paths.at(0);

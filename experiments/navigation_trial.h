@@ -60,6 +60,8 @@ struct NavigationResult {
   int longest_hold = 0;
   int recovery_steps = 0;  // steps on which the planner found no way to the goal (so the recovery ran)
   int repeated_steps = 0;  // steps of a third or later lap of the same loop, with a path (planning::RepeatedStep)
+  int scan_steps = 0;      // steps planned with range scans, after a hold (navigation.scan_when_held)
+  std::vector<core::Segment2> scan_walls;  // the walls those scans showed, merged (planning::ScanWallSet)
   std::vector<core::Segment2> blocks;  // every motion block added (search.block_when_stuck), taken back or not
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;

@@ -72,7 +72,7 @@ int RunNavigationCommand(const TrialArgs& a) {
   n.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
   n.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
   int step = 0;
-  experiments::MapPictureExtras extras{w.goal, {}, {}};
+  experiments::MapPictureExtras extras{w.goal, {}, {}, {}};
   n.on_estimates = [&](const std::vector<planning::FrontierEstimate>& ps) { extras.frontier_ps = ps; };
   std::ofstream trace = OpenTrace(
       a.trace,
@@ -93,11 +93,11 @@ int RunNavigationCommand(const TrialArgs& a) {
   const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
   if (trace.is_open()) fmt::print("wrote {} ({} rows)\n", a.trace, step);
   const std::string picture = (fs::path(a.out) / "trial.png").string();
-  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, picture, {w.goal, r.frontier_ps, r.blocks});
+  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, picture, {w.goal, r.frontier_ps, r.blocks, r.scan_walls});
   fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, motion blocks {}, "
-             "{:.1f} s -> {}\n",
-             seed, r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.blocks.size(), r.wall_time_s,
-             picture);
+             "longest hold {}, scan steps {}, {:.1f} s -> {}\n",
+             seed, r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.blocks.size(), r.longest_hold,
+             r.scan_steps, r.wall_time_s, picture);
   return 0;
 }
 

@@ -263,6 +263,15 @@ TEST(Config, AFrontierPieceShorterThanTheLspCellIsAnError) {
   EXPECT_NO_THROW(ParseConfig("lsp:\n  piece_length: 0\n", "k.yaml")) << "0: frontiers whole";
 }
 
+TEST(Config, AHeldAgentScansBeforeTheStuckTestEndsItsTrial) {
+  EXPECT_EQ(Config{}.navigation.scan_when_held, 0) << "off unless set";
+  EXPECT_EQ(ParseConfig("navigation:\n  scan_when_held: 20\n", "k.yaml").navigation.scan_when_held, 20);
+  const auto e = ErrorOf("navigation:\n  stuck_window: 30\n  scan_when_held: 30\n");
+  EXPECT_EQ(e.key(), "navigation.scan_when_held");
+  EXPECT_EQ(e.value(), "30");
+  EXPECT_EQ(ErrorOf("navigation:\n  scan_when_held: -1\n").key(), "navigation.scan_when_held");
+}
+
 TEST(Config, UnknownWorldKindIsNamed) {
   const auto e = ErrorOf("demo:\n  kinds: [labyrinth, castle]\n");
   EXPECT_EQ(e.key(), "demo.kinds");

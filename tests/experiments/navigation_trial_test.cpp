@@ -244,6 +244,7 @@ TEST(NavigationTrial, AnAgentWalkingALoopInPlaceAsItsPlanFlipsIsNudged) {
   // pieces the oracle takes another way there.)
   Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/noisy.yaml");
   cfg.lsp.piece_length = 0;
+  cfg.navigation.scan_when_held = 0;  // the nudge alone (held, the agent's range scans get it out first)
   const NavigationResult r = RunMaze(cfg, 7367, GoalPlanner::kOracle, 400);  // the goal after 323 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
   EXPECT_GT(r.nudges, 0);
@@ -255,7 +256,9 @@ TEST(NavigationTrial, AnAgentWalkingTheSameWideLoopLapAfterLapIsNudged) {
   // the one before), making headway on most steps, too wide for HeldInPlace.  The third lap's steps count as
   // no headway (planning::RepeatedStep), so it is nudged out and reaches the goal (counted as no headway by
   // nothing, the loop ends the run "stuck" after 503 steps).
-  const NavigationResult r = RunMaze("noisy.yaml", 5769, GoalPlanner::kOptimistic, 580);  // the goal after 546 steps
+  Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/noisy.yaml");
+  cfg.navigation.scan_when_held = 0;  // the repeated steps alone (held, the agent's range scans get it out first)
+  const NavigationResult r = RunMaze(cfg, 5769, GoalPlanner::kOptimistic, 580);  // the goal after 546 steps
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
   EXPECT_GT(r.repeated_steps, 0) << "the record counts the repeated steps";
 }
@@ -300,6 +303,24 @@ TEST(NavigationTrial, AWallDrawnPastTwoCornersAnOpeningApartIsTriedAsADoorway) {
   // after 304 (457 units).  The two corners make a doorway hypothesis: the goal after 100 steps (157 units).
   const NavigationResult r = RunPaperMaze(9442, GoalPlanner::kOptimistic, 150);
   EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+}
+
+TEST(NavigationTrial, AHeldAgentPlansWithItsRangeScansAndGetsOutToTheGoal) {
+  // Tuning maze 3590, optimistic with the simulated sensor: the agent presses at a 74-unit blank wall the map
+  // lacks (a corridor's side, seen along its length) and its way flips between ways round it; motion blocks
+  // and nudges do not get it off, and the run walks into the step cap (600 steps, 829 units).  Held 20 steps
+  // (the maze configs' navigation.scan_when_held), it plans with the walls its range scans show besides the
+  // map's and reaches the goal.
+  Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/noisy.yaml");
+  ASSERT_EQ(cfg.navigation.scan_when_held, 20);
+  const NavigationResult r = RunMaze(cfg, 3590, GoalPlanner::kOptimistic, 400);  // the goal after 330 steps
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  EXPECT_GT(r.scan_steps, 0);
+  EXPECT_FALSE(r.scan_walls.empty()) << "the record keeps the walls the scans showed (its picture draws them)";
+  cfg.navigation.scan_when_held = 0;
+  const NavigationResult without = RunMaze(cfg, 3590, GoalPlanner::kOptimistic, 400);
+  EXPECT_FALSE(without.reached) << "without the scans the map alone does not get it there within 400 steps";
+  EXPECT_EQ(without.scan_steps, 0);
 }
 
 }  // namespace
