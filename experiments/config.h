@@ -120,8 +120,8 @@ struct NavigationOptions {
   double doorway_max_width = 24.0;
   // > 0: once the agent's last this many positions lie within stuck_span of each other (held, as stuck_window
   // counts), it plans with what its own range sensing shows round it besides the map, every step from then
-  // on: the walls of its last scans (the motion's avoid_window in range; planning/scan_walls.h).  Below
-  // stuck_window, so a held agent gets this before the trial would end "stuck"; 0: off
+  // on: the walls of every scan since, merged (the motion's avoid_window in range; planning/scan_walls.h).
+  // Below stuck_window, so a held agent gets this before the trial would end "stuck"; 0: off
   int scan_when_held = 0;
   static const core::OptionFields<NavigationOptions>& Fields();
 };
