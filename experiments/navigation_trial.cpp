@@ -1,5 +1,6 @@
 #include "experiments/navigation_trial.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -104,7 +105,8 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // space.
 // With navigation.scan_when_held, an agent held that many steps (as the stuck test counts) plans from then on
 // with the walls its own range sensing shows round it besides the map's (planning::ScanWalls, every scan's
-// merged): the true wall the map lacks that holds it is then a wall to its planner.
+// merged; exact ray casts, clutter included, as the motion's own obstacle avoidance sees): the true wall the map
+// lacks that holds it is then a wall to its planner, and no doorway hypothesis opens one.
 // Where the map cuts the goal off (a goal-directed trial's goal is reachable: some wall of the map is false),
 // Recover() tries in turn a way through a doorway hypothesis (planning/doorways.h), the blocked frontiers and
 // motion blocks taken back, and a frontier or a suspected false wall to look at from close by
@@ -222,7 +224,7 @@ class NavigationPolicy : public AgentPolicy {
     std::vector<planning::ScanRay> rays(kScanRays);
     for (int j = 0; j < kScanRays; ++j) {
       const double angle = 2.0 * core::kPi * j / kScanRays;
-      rays[size_t(j)] = {angle, ray_caster_->CastRay(at, angle, scan_range_)};
+      rays[size_t(j)] = {angle, ray_caster_->CastRay(at, angle, scan_range_, /*include_clutter=*/true)};
     }
     scan_walls_.Add(planning::ScanWalls(at, rays, scan_range_, kScanLink, kScanTolerance));
     ++scan_steps_;
@@ -276,6 +278,11 @@ class NavigationPolicy : public AgentPolicy {
     planning::FrontierChoice best;
     const double min_width = options_.doorway_min_width, max_width = options_.doorway_max_width;
     std::vector<planning::Doorway> doorways = planning::DoorwayHypotheses(view, kOnWall, min_width, max_width);
+    // The walls the range scans showed come last in the view: they are true walls, with no doorway in them.
+    const size_t scanned_from = view.walls.size() - scan_walls_.walls().size();
+    doorways.erase(std::remove_if(doorways.begin(), doorways.end(),
+                                  [&](const planning::Doorway& d) { return size_t(d.wall) >= scanned_from; }),
+                   doorways.end());
     for (const auto& o : openings_)
       if (const auto d = planning::Anchored(view, map_walls, o, kOnWall / 2)) doorways.push_back(*d);
     for (const auto& d : doorways) {

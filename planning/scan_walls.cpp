@@ -1,5 +1,6 @@
 #include "planning/scan_walls.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -31,7 +32,10 @@ void AddChain(const std::vector<Vec2>& chain, double tolerance, std::vector<core
   if (chain.size() < 2) return;
   std::vector<size_t> kept;
   Simplify(chain, 0, chain.size() - 1, tolerance, &kept);
-  for (size_t k = 1; k < kept.size(); ++k) walls->push_back({chain[kept[k - 1]], chain[kept[k]]});
+  for (size_t k = 1; k < kept.size(); ++k) {
+    const Vec2 &a = chain[kept[k - 1]], &b = chain[kept[k]];
+    if (core::Distance(a, b) > 1e-6) walls->push_back({a, b});  // no wall of zero length
+  }
 }
 
 }  // namespace
@@ -60,7 +64,7 @@ std::vector<core::Segment2> ScanWalls(const Vec2& origin, const std::vector<Scan
     if (k > 0 && !linked((i + n - 1) % n, i)) AddChain(chain, tolerance, &walls), chain.clear();
     if (hits[i]) chain.push_back(*hits[i]);
   }
-  if (n > 1 && linked((start + n - 1) % n, start) && hits[start]) chain.push_back(*hits[start]);  // a full ring
+  if (n > 2 && linked((start + n - 1) % n, start) && hits[start]) chain.push_back(*hits[start]);  // a full ring
   AddChain(chain, tolerance, &walls);
   return walls;
 }

@@ -18,13 +18,14 @@ struct ScanRay {
 // The wall segments a scan from 'origin' shows: the hit points of consecutive rays (in the order given, the last
 // one next to the first: a full turn) that lie within 'link' of each other form one chain, and each chain of at
 // least two points is simplified to segments no hit point of it lies farther than 'tolerance' from.  Rays with
-// no hit (range >= max_range) break chains, and so does a jump in range (an occluding edge).
+// no hit (range >= max_range) break chains, and so do consecutive hits farther than 'link' apart (an occluding
+// edge, or a wall seen so nearly edge-on that its hits spread out).
 std::vector<core::Segment2> ScanWalls(const core::Vec2& origin, const std::vector<ScanRay>& rays, double max_range,
                                       double link, double tolerance);
 
 // The walls of many scans, merged: a segment whose ends both lie within 'tolerance' of a kept segment's line,
-// overlapping it or 'link' or less beyond its end, lengthens that segment instead of adding another, so the set
-// grows with the length of wall seen, not with the number of scans.
+// overlapping it or 'link' or less beyond its end, lengthens the first such kept segment instead of adding
+// another, so scans of the same walls add little (kept segments are not merged with each other).
 class ScanWallSet {
  public:
   ScanWallSet(double link, double tolerance) : link_(link), tolerance_(tolerance) {}

@@ -38,14 +38,16 @@ double TotalLength(const std::vector<Segment2>& walls) {
   return sum;
 }
 
-// The room x, y in [-5, 5]; with a doorway, the east side is open for |y| < 2.
+// The room x, y in [-5, 5]; with a doorway, the west side is open for |y| < 2 (the scan's first ray points
+// east, so the walk round the scan starts at the doorway's edge and crosses from the last ray to the first on
+// the east wall).
 std::vector<Segment2> Room(bool doorway) {
-  std::vector<Segment2> walls{{{-5, -5}, {5, -5}}, {{5, 5}, {-5, 5}}, {{-5, 5}, {-5, -5}}};
+  std::vector<Segment2> walls{{{-5, -5}, {5, -5}}, {{5, 5}, {-5, 5}}, {{5, -5}, {5, 5}}};
   if (!doorway) {
-    walls.push_back({{5, -5}, {5, 5}});
+    walls.push_back({{-5, 5}, {-5, -5}});
   } else {
-    walls.push_back({{5, -5}, {5, -2}});
-    walls.push_back({{5, 2}, {5, 5}});
+    walls.push_back({{-5, 5}, {-5, 2}});
+    walls.push_back({{-5, -2}, {-5, -5}});
   }
   return walls;
 }
@@ -53,20 +55,22 @@ std::vector<Segment2> Room(bool doorway) {
 TEST(ScanWalls, AClosedRoomSeenFromInsideGivesItsFourSidesWhole) {
   const std::vector<Segment2> walls = ScanWalls({0, 0}, Scan({0, 0}, Room(false)), kMaxRange, 2.0, 0.3);
   EXPECT_LE(walls.size(), 5u) << "four sides, the one the walk round starts on perhaps in two";
-  EXPECT_NEAR(TotalLength(walls), 40.0, 0.5);
+  EXPECT_NEAR(TotalLength(walls), 40.0, 0.05) << "the ring closed: no gap between the last ray and the first";
   for (const auto& w : walls)
     for (const Vec2& p : {w.a, w.b})
       EXPECT_NEAR(std::max(std::abs(p.x), std::abs(p.y)), 5.0, 0.3) << "(" << p.x << ", " << p.y << ") off the walls";
 }
 
 TEST(ScanWalls, RaysWithNoHitAndJumpsInRangeBreakTheWalls) {
-  // Through the doorway nothing is within range: no wall spans it.
+  // Through the doorway nothing is within range: no wall spans it, and the east wall, where the last ray
+  // meets the first, comes out whole.
   const std::vector<Segment2> walls = ScanWalls({0, 0}, Scan({0, 0}, Room(true)), kMaxRange, 2.0, 0.3);
-  EXPECT_NEAR(TotalLength(walls), 36.0, 0.8);
+  EXPECT_EQ(walls.size(), 5u) << "two stubs beside the doorway, and the north, east and south sides";
+  EXPECT_NEAR(TotalLength(walls), 36.0, 0.2);
   for (const auto& w : walls)
     for (double t = 0; t <= 1; t += 0.05) {
       const Vec2 p = w.a + (w.b - w.a) * t;
-      EXPECT_FALSE(p.x > 4.5 && std::abs(p.y) < 1.5) << "a wall across the doorway at (" << p.x << ", " << p.y << ")";
+      EXPECT_FALSE(p.x < -4.5 && std::abs(p.y) < 1.5) << "a wall across the doorway at (" << p.x << ", " << p.y << ")";
     }
   // A pillar in front of the west wall: its near face and the wall behind it are separate walls, not joined.
   std::vector<Segment2> pillar = Room(false);
