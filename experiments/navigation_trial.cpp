@@ -150,9 +150,9 @@ class NavigationPolicy : public AgentPolicy {
     std::optional<planning::VisibilityGraph> own_graph;
     if (!true_map_) {
       own_view = WithRegionWalls(*state.view, region_);
-      for (const auto& e : blocked_.probed()) planning::AddFreeStandingWall(&own_view, e);
+      planning::AddFreeStandingWalls(&own_view, blocked_.probed());
       if (blocks_ && !blocks_->blocks().empty()) own_view = blocks_->With(own_view);
-      for (const auto& w : scan_walls_.walls()) planning::AddFreeStandingWall(&own_view, w);
+      planning::AddFreeStandingWalls(&own_view, scan_walls_.walls());
       own_graph.emplace(own_view, planning_, false);
     }
     const mapping::MapView& view = true_map_ ? *true_map_ : own_view;

@@ -58,7 +58,7 @@ void MotionBlocks::Clear() {
 
 mapping::MapView MotionBlocks::With(const mapping::MapView& view) const {
   mapping::MapView out = view;
-  for (const auto& block : blocks_) AddFreeStandingWall(&out, block);
+  AddFreeStandingWalls(&out, blocks_);
   return out;
 }
 

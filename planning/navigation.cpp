@@ -352,13 +352,18 @@ void AddWalls(mapping::MapView* view, const std::vector<Vec2>& polyline, bool cl
   if (closed && polyline.size() > 2) view->walls.push_back({-1, -1, polyline.back(), polyline.front(), 1.0});
 }
 
-void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall) {
+void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall) { AddFreeStandingWalls(view, {wall}); }
+
+void AddFreeStandingWalls(mapping::MapView* view, const std::vector<core::Segment2>& walls) {
   int id = 0;
   for (const auto& v : view->vertices) id = std::max(id, v.id + 1);
   for (const auto& w : view->walls) id = std::max({id, w.a + 1, w.b + 1});
-  view->vertices.push_back({id, wall.a, {}, 0});
-  view->vertices.push_back({id + 1, wall.b, {}, 0});
-  view->walls.push_back({id, id + 1, wall.a, wall.b, 1.0});
+  for (const auto& wall : walls) {
+    view->vertices.push_back({id, wall.a, {}, 0});
+    view->vertices.push_back({id + 1, wall.b, {}, 0});
+    view->walls.push_back({id, id + 1, wall.a, wall.b, 1.0});
+    id += 2;
+  }
 }
 
 std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view,

@@ -100,6 +100,8 @@ void AddWalls(mapping::MapView* view, const std::vector<core::Vec2>& polyline, b
 // graph has nodes to go round it: an obstacle standing free of the map's walls (a motion block, a given-up
 // frontier piece).
 void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall);
+// The same for each of 'walls', in order (the free vertex id found once for them all).
+void AddFreeStandingWalls(mapping::MapView* view, const std::vector<core::Segment2>& walls);
 
 // The frontiers of 'view' the targets name, in the targets' order.
 std::vector<const mapping::Frontier*> TargetFrontiers(const mapping::MapView& view,

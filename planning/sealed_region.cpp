@@ -9,11 +9,7 @@ std::optional<core::Vec2> UnreachedSide(const std::vector<core::Polygon>& known,
                                         double reach, const core::Vec2& agent) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   core::Aabb2 box{{kInf, kInf}, {-kInf, -kInf}};
-  for (const auto& poly : known)
-    for (const auto& p : poly.outer) {
-      box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-      box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
-    }
+  for (const auto& poly : known) box = core::Bounds(poly.outer, box);
   if (box.min.x > box.max.x) return std::nullopt;
   const double x = std::clamp(agent.x, region.min.x, region.max.x);
   const double y = std::clamp(agent.y, region.min.y, region.max.y);
