@@ -82,10 +82,18 @@ std::vector<int> CellsNear(const Raster& r, const std::vector<Vec2>& polyline, d
   return out;
 }
 
-std::vector<double> CellDistances(const Raster& r, const std::vector<char>& passable, const std::vector<int>& sources) {
+std::vector<double> CellDistances(const Raster& r, const std::vector<char>& passable, const std::vector<int>& sources,
+                                  const std::vector<int>* until) {
   TOPONAV_CHECK(passable.size() == r.size(), "passable mask of " << passable.size() << " for " << r.size() << " cells");
   constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<double> dist(r.size(), kInf);
+  std::vector<char> wanted;  // the cells of 'until' not settled yet
+  size_t left = 0;
+  if (until) {
+    wanted.assign(r.size(), 0);
+    for (int c : *until)
+      if (c >= 0 && size_t(c) < r.size() && !wanted[size_t(c)]) wanted[size_t(c)] = 1, ++left;
+  }
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
   for (int s : sources)
@@ -100,7 +108,8 @@ std::vector<double> CellDistances(const Raster& r, const std::vector<char>& pass
   while (!open.empty()) {
     const auto [d, c] = open.top();
     open.pop();
-    if (d > dist[size_t(c)]) continue;
+    if (d > dist[size_t(c)]) continue;  // a cell is settled at its first pop: pushes need a strictly shorter way
+    if (until && wanted[size_t(c)] && (wanted[size_t(c)] = 0, --left == 0)) break;
     const int x = c % r.width, y = c / r.width;
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {

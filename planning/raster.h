@@ -31,8 +31,10 @@ std::vector<int> CellsNear(const Raster& raster, const std::vector<core::Vec2>& 
 
 // Shortest 8-connected distances (world units) from the 'sources' (distance 0) through the cells with
 // passable != 0; a diagonal step needs both cells beside it passable (no cutting a wall's corner).
-// Infinity where unreachable; sources that are not passable are ignored.
+// Infinity where unreachable; sources that are not passable are ignored.  With 'until', the search stops
+// once every cell of it is settled: the distances there are exact, and other cells' may be left too high
+// (infinity where the search did not get to them).
 std::vector<double> CellDistances(const Raster& raster, const std::vector<char>& passable,
-                                  const std::vector<int>& sources);
+                                  const std::vector<int>& sources, const std::vector<int>* until = nullptr);
 
 }  // namespace toponav::planning

@@ -91,19 +91,25 @@ OrderingProblem SubgoalGrid::Distances() const {
   const size_t n = cells_.size();
   OrderingProblem p;
   p.properties.resize(n);
+  // Each search stops once the frontier cells it is asked about are settled.
   const std::vector<char> through_known = ThroughKnown();
-  const std::vector<double> from_agent = CellDistances(raster_, through_known, {agent_});
+  std::vector<int> all;
+  for (const auto& cells : cells_) all.insert(all.end(), cells.begin(), cells.end());
+  const std::vector<double> from_agent = CellDistances(raster_, through_known, {agent_}, &all);
   std::vector<char> open = unknown_open_;
   if (goal_ >= 0) open[size_t(goal_)] = 1;
-  const std::vector<double> from_goal = CellDistances(raster_, open, {goal_});
+  const std::vector<double> from_goal = CellDistances(raster_, open, {goal_}, &all);
   for (size_t f = 0; f < n; ++f) {
     p.robot_cost.push_back(MinOver(from_agent, cells_[f]));
     p.goal_cost.push_back(MinOver(from_goal, cells_[f]));
   }
   p.between.assign(n, std::vector<double>(n, 0.0));
-  for (size_t f = 0; f < n; ++f) {
-    const std::vector<double> from_f = CellDistances(raster_, through_known, cells_[f]);
-    for (size_t g = f + 1; g < n; ++g) p.between[f][g] = p.between[g][f] = MinOver(from_f, cells_[g]);
+  std::vector<int> after;  // the cells of frontiers f + 1 .. n - 1
+  for (size_t g = n; g-- > 1;) {
+    const size_t f = g - 1;
+    after.insert(after.end(), cells_[g].begin(), cells_[g].end());
+    const std::vector<double> from_f = CellDistances(raster_, through_known, cells_[f], &after);
+    for (size_t h = g; h < n; ++h) p.between[f][h] = p.between[h][f] = MinOver(from_f, cells_[h]);
   }
   return p;
 }
@@ -130,25 +136,28 @@ std::vector<SubgoalProperties> TrueSubgoalProperties(const SubgoalGrid& grid, co
   const std::vector<char> free = truth.On(r);
   std::vector<char> unseen(r.size(), 0);  // free in the true world, not known yet, not in a wall's shadow
   for (size_t i = 0; i < unseen.size(); ++i) unseen[i] = free[i] && !grid.known()[i] && !grid.near_walls()[i];
-  const std::vector<double> to_goal = CellDistances(r, unseen, {grid.goal_cell()});
+  // Each frontier's seeds: its cells on the unseen side.  to_goal and robot are read there only.
+  std::vector<std::vector<int>> seeds(distances.properties.size());
+  std::vector<int> all_seeds;
+  for (size_t f = 0; f < seeds.size(); ++f)
+    for (int c : grid.cells(f))
+      if (unseen[size_t(c)]) seeds[f].push_back(c), all_seeds.push_back(c);
+  const std::vector<double> to_goal = CellDistances(r, unseen, {grid.goal_cell()}, &all_seeds);
   std::vector<char> free_or_agent = free;
   if (grid.agent_cell() >= 0) free_or_agent[size_t(grid.agent_cell())] = 1;
   std::vector<char> seen_free = grid.ThroughKnown();  // the way to a frontier cell, in the true world
   for (size_t i = 0; i < seen_free.size(); ++i) seen_free[i] = seen_free[i] && free_or_agent[i];
-  const std::vector<double> robot = CellDistances(r, seen_free, {grid.agent_cell()});
+  const std::vector<double> robot = CellDistances(r, seen_free, {grid.agent_cell()}, &all_seeds);
   const std::vector<double> from_agent = CellDistances(r, free_or_agent, {grid.agent_cell()});
   std::vector<SubgoalProperties> out;
   for (size_t f = 0; f < distances.properties.size(); ++f) {
-    std::vector<int> seeds;
-    for (int c : grid.cells(f))
-      if (unseen[size_t(c)]) seeds.push_back(c);
     SubgoalProperties s{0.0, 0.0, 0.0};
-    if (std::isfinite(MinOver(to_goal, seeds))) {
+    if (std::isfinite(MinOver(to_goal, seeds[f]))) {
       s.ps = 1.0;
-      s.delta_success = SuccessDelta(seeds, robot, to_goal, distances.robot_cost[f], distances.goal_cost[f]);
-    } else if (!seeds.empty()) {
+      s.delta_success = SuccessDelta(seeds[f], robot, to_goal, distances.robot_cost[f], distances.goal_cost[f]);
+    } else if (!seeds[f].empty()) {
       // The unseen region behind the frontier: how deep the agent would walk in and back out.
-      const std::vector<double> region = CellDistances(r, unseen, seeds);
+      const std::vector<double> region = CellDistances(r, unseen, seeds[f]);
       double lo = kInf, hi = -kInf;
       for (size_t c = 0; c < region.size(); ++c)
         if (std::isfinite(region[c]) && std::isfinite(from_agent[c]))

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "planning/raster.h"
 #include "tests/planning/dead_end_view.h"
@@ -39,6 +41,23 @@ TEST(Raster, DistancesGoAroundBlockedCellsWithoutCuttingCorners) {
   EXPECT_EQ(near.size(), 20u) << "the two rows of cells the line runs between";
 }
 
+TEST(Raster, ASearchAskedAboutSomeCellsStopsOnceTheyAreSettledWithTheirDistancesExact) {
+  const Raster r = Raster::Covering({{0, 0}, {10, 10}}, 1.0);
+  std::vector<char> open(r.size(), 1);
+  for (int y = 0; y < 9; ++y) open[size_t(r.Index(5, y))] = 0;
+  const int from = r.CellOf({0.5, 0.5}), near = r.CellOf({2.5, 1.5}), beyond = r.CellOf({9.5, 0.5});
+  const std::vector<double> full = CellDistances(r, open, {from});
+  const std::vector<int> asked{near, r.CellOf({1.5, 3.5})};
+  const std::vector<double> early = CellDistances(r, open, {from}, &asked);
+  for (int c : asked) EXPECT_EQ(early[size_t(c)], full[size_t(c)]);
+  EXPECT_TRUE(std::isinf(early[size_t(beyond)])) << "the search stopped before the far side of the wall";
+  // A cell no way reaches: the search runs to its end, every distance exact.
+  std::vector<char> walled = open;
+  walled[size_t(r.Index(5, 9))] = 0;
+  const std::vector<int> unreachable{beyond};
+  EXPECT_EQ(CellDistances(r, walled, {from}, &unreachable), CellDistances(r, walled, {from}));
+}
+
 // (Not copyable in spirit: 'frontiers' points into 'view'.)
 struct Seen {
   mapping::MapView view = testing::DeadEndSeenFromStart();
@@ -57,6 +76,30 @@ TEST(SubgoalGrid, DistancesRunThroughKnownSpaceToFrontiersAndThroughUnknownSpace
   EXPECT_NEAR(d.goal_cost[1], 53 * std::sqrt(2.0) + 60, 4.0);  // octile distance from (14, 60) to (127, 7)
   EXPECT_NEAR(d.between[0][1], d.between[1][0], 1e-9);
   EXPECT_GT(d.between[0][1], 40.0);
+}
+
+TEST(SubgoalGrid, DistancesEqualThoseOfSearchesRunToTheEnd) {
+  const Seen s;
+  const core::World w = ::toponav::testing::DeadEndMaze();
+  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  ASSERT_EQ(grid.num_frontiers(), 2u);
+  const auto min_over = [&](const std::vector<double>& d, size_t f) {
+    double m = std::numeric_limits<double>::infinity();
+    for (int c : grid.cells(f)) m = std::min(m, d[size_t(c)]);
+    return m;
+  };
+  const Raster& r = grid.raster();
+  const std::vector<double> robot = CellDistances(r, grid.ThroughKnown(), {grid.agent_cell()});
+  std::vector<char> open = grid.unknown_open();
+  open[size_t(grid.goal_cell())] = 1;
+  const std::vector<double> goal = CellDistances(r, open, {grid.goal_cell()});
+  const OrderingProblem d = grid.Distances();
+  for (size_t f = 0; f < 2; ++f) {
+    EXPECT_EQ(d.robot_cost[f], min_over(robot, f));
+    EXPECT_EQ(d.goal_cost[f], min_over(goal, f));
+  }
+  EXPECT_EQ(d.between[0][1], min_over(CellDistances(r, grid.ThroughKnown(), grid.cells(0)), 1));
+  EXPECT_TRUE(std::isfinite(d.between[0][1]));
 }
 
 TEST(SubgoalGrid, TrueLabelsMarkTheWayToTheGoalAndPriceTheDeadEnd) {
