@@ -129,7 +129,7 @@ json RunTrial(const Config& config, const TrialId& id, const core::World& w, con
   n.on_step = on_step;
   const NavigationResult r = RunNavigationTrial(w, config, n, id.seed, view);
   *paths = {r.path};
-  *extras = {w.goal, r.frontier_ps, r.blocks, r.scan_walls};
+  *extras = {w.goal, r.frontier_ps, r.blocks, r.scan_walls, {}};
   return NavigationJson(id, r);
 }
 

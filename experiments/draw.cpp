@@ -57,6 +57,7 @@ class Canvas {
   Vec2 origin_;
 };
 
+const cv::Scalar kWay(235, 190, 0);  // cyan (BGR)
 const cv::Scalar kAgentColours[] = {cv::Scalar(220, 90, 20), cv::Scalar(30, 160, 30), cv::Scalar(160, 40, 170)};
 const cv::Scalar kFree(250, 250, 250), kWall(20, 20, 20), kObstacle(150, 150, 150), kGuide(60, 190, 60);
 const cv::Scalar kBox(40, 90, 160), kCylinder(190, 120, 40), kTree(40, 140, 40), kStart(220, 90, 20),
@@ -199,6 +200,10 @@ void PaintMap(Canvas& c, const core::World& world, const mapping::MapView& map,
   for (const auto& b : extras.blocks) cv::line(c.image, c.Px(b.a), c.Px(b.b), cv::Scalar(0, 140, 255), 3, cv::LINE_AA);
   for (const auto& w : extras.scan_walls)
     cv::line(c.image, c.Px(w.a), c.Px(w.b), cv::Scalar(160, 160, 0), 2, cv::LINE_AA);
+  std::vector<cv::Point> way;
+  for (const auto& p : extras.way) way.push_back(c.Px(p));
+  if (way.size() > 1)
+    cv::polylines(c.image, std::vector<std::vector<cv::Point>>{way}, false, kWay, 1, cv::LINE_AA);
   for (const auto& v : map.vertices)
     cv::circle(c.image, c.Px(v.position), 3, cv::Scalar(0, 0, 0), cv::FILLED, cv::LINE_AA);
   for (const auto& v : map.rejected) cv::circle(c.image, c.Px(v.position), 4, cv::Scalar(0, 0, 230), 2, cv::LINE_AA);
@@ -250,9 +255,10 @@ TrialVideo::TrialVideo(const core::World& world, const PictureOptions& options, 
 
 TrialVideo::~TrialVideo() = default;
 
-void TrialVideo::AddFrame(const mapping::MapView& map, const std::vector<std::vector<core::Vec2>>& agent_paths) {
+void TrialVideo::AddFrame(const mapping::MapView& map, const std::vector<std::vector<core::Vec2>>& agent_paths,
+                          const MapPictureExtras& extras) {
   Canvas c(impl_->world, impl_->options);
-  PaintMap(c, impl_->world, map, agent_paths);
+  PaintMap(c, impl_->world, map, agent_paths, extras);
   cv::Mat frame(impl_->size, CV_8UC3, cv::Scalar(70, 70, 70));
   c.image.copyTo(frame(cv::Rect(0, 0, c.image.cols, c.image.rows)));
   impl_->writer.write(frame);

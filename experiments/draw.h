@@ -34,16 +34,18 @@ struct MapPictureExtras {
   std::vector<planning::FrontierEstimate> frontier_ps;
   std::vector<core::Segment2> blocks;
   std::vector<core::Segment2> scan_walls;  // a held agent's range scans (navigation.scan_when_held)
+  std::vector<core::Vec2> way;  // the way the agent follows this step (navigation frames and videos)
 };
 
 // A map over the true world: true walls faint, known space shaded, frontiers dashed (magenta; with an
 // estimated Ps from red at 0 to green at 1), map walls and vertices black, rejected vertices red, the agents'
-// paths in their own colours, motion blocks orange, range-scan walls teal, the goal (if given) a red disc.
+// paths in their own colours, motion blocks orange, range-scan walls teal, the way the agent follows a thin
+// cyan line, the goal (if given) a red disc.
 void DrawMapPicture(const core::World& world, const mapping::MapView& map,
                     const std::vector<std::vector<core::Vec2>>& agent_paths, const PictureOptions& options,
                     const std::string& png_path, const MapPictureExtras& extras = {});
 
-// A video of a trial, one DrawMapPicture-style frame (plus each agent's position) per AddFrame: MP4 ('.mp4',
+// A video of a trial, one DrawMapPicture frame per AddFrame: MP4 ('.mp4',
 // MPEG-4 part 2) or Motion-JPEG AVI ('.avi').  Throws core::DataError naming the file if it cannot be opened.
 class TrialVideo {
  public:
@@ -51,7 +53,8 @@ class TrialVideo {
   ~TrialVideo();
   TrialVideo(const TrialVideo&) = delete;
   TrialVideo& operator=(const TrialVideo&) = delete;
-  void AddFrame(const mapping::MapView& map, const std::vector<std::vector<core::Vec2>>& agent_paths);
+  void AddFrame(const mapping::MapView& map, const std::vector<std::vector<core::Vec2>>& agent_paths,
+                const MapPictureExtras& extras = {});
   int frames() const { return frames_; }
 
  private:

@@ -164,7 +164,6 @@ class NavigationPolicy : public AgentPolicy {
     choice_ = planner_->Plan(problem).at(0);
     estimates_.clear();
     if (const planning::LspDecision* d = planning::LastDecision(*planner_)) estimates_ = planning::Estimates(*d);
-    if (on_estimates) on_estimates(estimates_);
     doorway_.reset();
     if (choice_.status != planning::PlanStatus::kFound && !true_map_) {
       ++recovery_steps_;
@@ -174,6 +173,9 @@ class NavigationPolicy : public AgentPolicy {
     if (cut_off_ >= options_.cut_off_steps) return End("cut_off");
     if (choice_.status == planning::PlanStatus::kFound)
       (*paths)[0].assign(choice_.path.points.begin() + 1, choice_.path.points.end());
+    if (on_decision)
+      on_decision({estimates_, choice_.status == planning::PlanStatus::kFound ? choice_.path.points
+                                                                              : std::vector<Vec2>{}});
     return true;
   }
 
@@ -200,7 +202,7 @@ class NavigationPolicy : public AgentPolicy {
     return NudgeRandomly(motion, agent, state.step_length, rng);
   }
 
-  std::function<void(const std::vector<planning::FrontierEstimate>&)> on_estimates;
+  std::function<void(const NavigationDecision&)> on_decision;
   std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
   const std::vector<planning::FrontierEstimate>& estimates() const { return estimates_; }
   const std::string& end_reason() const { return end_reason_; }
@@ -355,7 +357,7 @@ NavigationResult RunNavigationTrial(const core::World& world, const Config& conf
                                     uint64_t seed, mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();
   NavigationPolicy policy(world, config, o.planner);
-  policy.on_estimates = o.on_estimates;
+  policy.on_decision = o.on_decision;
   policy.on_plan = o.on_plan;
   LoopOptions lo;
   lo.max_steps = o.max_steps;

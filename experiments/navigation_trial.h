@@ -25,6 +25,16 @@ namespace toponav::experiments {
 // the true world's walls instead of the map: what a planner that knew the maze travels with the same motion and
 // path rules, the floor every other planner's cost is measured against).
 enum class GoalPlanner { kOptimistic, kOracle, kLsp, kKnown };
+
+// What the planner decided at a step, before the agent moves.
+struct NavigationDecision {
+  // The frontier pieces a learned-subgoal planner estimated, with their Ps (empty for the optimistic planner,
+  // or when it planned optimistically).
+  std::vector<planning::FrontierEstimate> estimates;
+  // The way the agent follows this step (the planner's, or the recovery's), from where it stands to its end
+  // (world units); empty where it has none and stays.
+  std::vector<core::Vec2> way;
+};
 const char* ToString(GoalPlanner planner);
 std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name);
 
@@ -38,9 +48,8 @@ struct NavigationTrialOptions {
   // Called every step before the planner with the loop's state and the frontier targets on offer (training
   // data: the frontiers to label).
   std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
-  // Called every step (before the agent moves) with the frontier pieces a learned-subgoal planner estimated and
-  // their Ps (empty for the optimistic planner, or when it planned optimistically).
-  std::function<void(const std::vector<planning::FrontierEstimate>&)> on_estimates;
+  // Called every step that does not end the trial, before the agent moves, with what the planner decided.
+  std::function<void(const NavigationDecision&)> on_decision;
 };
 
 struct NavigationResult {
@@ -66,7 +75,7 @@ struct NavigationResult {
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;
   std::vector<core::Vec2> path;
-  std::vector<planning::FrontierEstimate> frontier_ps;  // the last step's (NavigationTrialOptions::on_estimates)
+  std::vector<planning::FrontierEstimate> frontier_ps;  // the last step's (NavigationDecision::estimates)
 };
 
 NavigationResult RunNavigationTrial(const core::World& world, const Config& config,

@@ -56,8 +56,8 @@ std::string NavigationTraceRow(int step, const core::Vec2& at, const core::Vec2&
                      subgoal_ps, v.vertices.size(), v.walls.size(), v.known_area());
 }
 
-// A goal-directed navigation trial with the named planner (trial.png, a frame every --frames-every steps, and
-// with --trace a CSV row a step).
+// A goal-directed navigation trial with the named planner (trial.png; a frame every --frames-every steps and
+// with --video a video, each with the way the agent followed; with --trace a CSV row a step).
 int RunNavigationCommand(const TrialArgs& a) {
   const experiments::Config cfg = LoadOrDefault(a.config);
   const auto planner = experiments::ParseGoalPlanner(a.planner);
@@ -72,18 +72,24 @@ int RunNavigationCommand(const TrialArgs& a) {
   n.max_steps = a.max_steps.value_or(cfg.bench.max_steps);
   n.mcmc_every = a.mcmc_every.value_or(cfg.bench.mcmc_every);
   int step = 0;
-  experiments::MapPictureExtras extras{w.goal, {}, {}, {}};
-  n.on_estimates = [&](const std::vector<planning::FrontierEstimate>& ps) { extras.frontier_ps = ps; };
+  experiments::MapPictureExtras extras{w.goal, {}, {}, {}, {}};
+  n.on_decision = [&](const experiments::NavigationDecision& d) {
+    extras.frontier_ps = d.estimates;
+    extras.way = d.way;
+  };
   std::ofstream trace = OpenTrace(
       a.trace,
       "step,x,y,distance_to_goal,frontiers,estimated_pieces,min_ps,subgoal_x,subgoal_y,subgoal_ps,map_vertices,"
       "map_walls,known_area");
   if (trace.is_open()) trace << "\n";
-  if (a.frames_every > 0 || trace.is_open())
+  std::unique_ptr<experiments::TrialVideo> video;
+  if (!a.video.empty()) video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
+  if (a.frames_every > 0 || trace.is_open() || video)
     n.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {
       if (a.frames_every > 0 && step % a.frames_every == 0)
         experiments::DrawMapPicture(w, v, paths, cfg.picture,
                                     (fs::path(a.out) / fmt::format("frame_{:04d}.png", step)).string(), extras);
+      if (video) video->AddFrame(v, paths, extras);
       if (trace.is_open())  // labelled like the search trace: moves made (the final map repeats the last)
         trace << NavigationTraceRow(int(paths.front().size()) - 1, paths.front().back(), w.goal, v,
                                     extras.frontier_ps);
@@ -92,8 +98,10 @@ int RunNavigationCommand(const TrialArgs& a) {
   mapping::MapView view;
   const auto r = experiments::RunNavigationTrial(w, cfg, n, seed, &view);
   if (trace.is_open()) fmt::print("wrote {} ({} rows)\n", a.trace, step);
+  if (video) fmt::print("wrote {} ({} frames)\n", a.video, video->frames());
   const std::string picture = (fs::path(a.out) / "trial.png").string();
-  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, picture, {w.goal, r.frontier_ps, r.blocks, r.scan_walls});
+  experiments::DrawMapPicture(w, view, {r.path}, cfg.picture, picture,
+                              {w.goal, r.frontier_ps, r.blocks, r.scan_walls, {}});
   fmt::print("seed {} planner {}: {} after {} steps, distance {:.1f}, IoU {:.4f}, nudges {}, motion blocks {}, "
              "longest hold {}, scan steps {}, {:.1f} s -> {}\n",
              seed, r.planner, r.end_reason, r.steps, r.distance, r.iou, r.nudges, r.blocks.size(), r.longest_hold,

@@ -133,6 +133,30 @@ TEST(NavigationTrial, LspWithASensorThatGivesNoSubgoalEstimatesStillReachesTheGo
   EXPECT_FALSE(ParseGoalPlanner("greedy"));
 }
 
+TEST(NavigationTrial, EachStepsDecisionGivesTheWayFromWhereTheAgentStoodAndItsFrontierEstimates) {
+  const Config cfg = ExactMazeConfig();
+  NavigationTrialOptions o;
+  o.planner = GoalPlanner::kOracle;
+  std::vector<NavigationDecision> decisions;
+  o.on_decision = [&](const NavigationDecision& d) { decisions.push_back(d); };
+  const NavigationResult r = RunNavigationTrial(SmallMaze(7), cfg, o, 7);
+  ASSERT_TRUE(r.reached) << r.end_reason;
+  // The last step found the agent at the goal and ended the trial without a decision.
+  ASSERT_EQ(int(decisions.size()), r.steps - 1);
+  ASSERT_EQ(r.path.size(), decisions.size() + 1);
+  bool estimated = false;
+  for (size_t s = 0; s < decisions.size(); ++s) {
+    const auto& way = decisions[s].way;
+    ASSERT_GE(way.size(), 2u) << "step " << s;
+    EXPECT_LT(core::Distance(way.front(), r.path[s]), 1e-6) << "step " << s << ": the way starts where the agent stood";
+    EXPECT_LT(core::Distance(r.path[s + 1], r.path[s]), core::Distance(way.back(), r.path[s]) + 1e-6)
+        << "step " << s << ": the agent stepped along it, no farther than its end";
+    estimated = estimated || !decisions[s].estimates.empty();
+  }
+  EXPECT_TRUE(estimated) << "the oracle estimated frontiers on some step";
+  EXPECT_EQ(r.frontier_ps.size(), decisions.back().estimates.size());
+}
+
 TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
   // The committed LSP network through the learned sensor: its per-cell outputs reach the planner's estimator
   // (they once did not -- a member initializer reset the estimator's pointer -- and every frontier kept Ps 1).
