@@ -14,6 +14,7 @@
 #include "core/rng.h"
 #include "experiments/internal/yaml_reader.h"
 #include "experiments/navigation_trial.h"
+#include "experiments/subgoal_calibration.h"
 
 namespace toponav::experiments {
 
@@ -313,6 +314,20 @@ std::string FindFromConfig(const std::string& path, const std::string& source) {
   return path;
 }
 
+// lsp:, and the file its key 'calibration' names (experiments/subgoal_calibration.h), read once here.
+void ReadLsp(YamlSection s, planning::LspOptions* lsp, const std::string& source) {
+  std::string calibration;
+  s.Read("calibration", &calibration);
+  s.ReadFields(lsp, planning::LspOptions::Fields());
+  s.Finish();
+  if (calibration.empty()) return;
+  const std::string path = FindFromConfig(calibration, source);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw core::ConfigError(source, "lsp.calibration", calibration, "not a readable file");
+  lsp->calibration = LoadSubgoalCalibration(path);
+}
+
 void ReadWorlds(YamlSection w, sim::WorldOptions* worlds) {
   ReadSection(w.Section("labyrinth"), &worlds->labyrinth);
   ReadSection(w.Section("office_park"), &worlds->office_park);
@@ -340,7 +355,7 @@ Config ParseConfig(const std::string& text, const std::string& source) {
   ReadSection(top.Section("planning"), &c.planning);
   ReadSearch(top.Section("search"), &c.search);
   ReadSection(top.Section("navigation"), &c.navigation);
-  ReadSection(top.Section("lsp"), &c.lsp);
+  ReadLsp(top.Section("lsp"), &c.lsp, source);
   ReadSection(top.Section("open_world"), &c.open_world);
   ReadSection(top.Section("picture"), &c.picture);
   ReadBench(top.Section("bench"), &c.bench);

@@ -25,8 +25,39 @@ using core::Vec2;
 
 namespace {
 
-// The planner 'kind' names; for "lsp" also its estimator, which the policy feeds the observations.
+using SubgoalTruthHook = std::function<void(const std::vector<planning::SubgoalProperties>&,
+                                            const std::vector<planning::SubgoalProperties>&)>;
+
+// The learned estimator, with each estimate handed to 'hook' beside the true properties of the pieces it
+// covered (NavigationTrialOptions::on_subgoal_truth).
+class TruthRecordingEstimator : public planning::SubgoalEstimator {
+ public:
+  TruthRecordingEstimator(std::unique_ptr<planning::CellAveragingEstimator> learned, const core::World& world,
+                          const Config& config, SubgoalTruthHook hook)
+      : learned_(std::move(learned)),
+        truth_(planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance)),
+        hook_(std::move(hook)) {}
+  std::vector<planning::SubgoalProperties> Estimate(const planning::SubgoalGrid& grid,
+                                                    const planning::OrderingProblem& distances) override {
+    std::vector<planning::SubgoalProperties> estimates = learned_->Estimate(grid, distances);
+    const std::vector<planning::SubgoalProperties> truth = truth_->Estimate(grid, distances);
+    std::vector<planning::SubgoalProperties> seen_estimates, seen_truth;
+    for (size_t f = 0; f < estimates.size(); ++f)
+      if (learned_->seen()[f]) seen_estimates.push_back(estimates[f]), seen_truth.push_back(truth[f]);
+    hook_(seen_estimates, seen_truth);
+    return estimates;
+  }
+
+ private:
+  std::unique_ptr<planning::CellAveragingEstimator> learned_;
+  std::unique_ptr<planning::SubgoalEstimator> truth_;
+  SubgoalTruthHook hook_;
+};
+
+// The planner 'kind' names; for "lsp" also its estimator, which the policy feeds the observations (its pieces
+// handed to 'on_subgoal_truth' with their true properties, if set).
 std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, const Config& config, GoalPlanner kind,
+                                                     const SubgoalTruthHook& on_subgoal_truth,
                                                      planning::CellAveragingEstimator** cells) {
   if (kind == GoalPlanner::kOptimistic || kind == GoalPlanner::kKnown)
     return planning::CreatePlanner(planning::PlannerKind::kOptimistic);
@@ -34,9 +65,12 @@ std::unique_ptr<planning::Planner> CreateGoalPlanner(const core::World& world, c
   if (kind == GoalPlanner::kOracle) {
     estimator = planning::CreateOracleEstimator(world, config.lsp.cell, config.lsp.clearance);
   } else {
-    auto averaging = std::make_unique<planning::CellAveragingEstimator>();
+    auto averaging = std::make_unique<planning::CellAveragingEstimator>(10, config.lsp.calibration);
     *cells = averaging.get();
-    estimator = std::move(averaging);
+    if (on_subgoal_truth)
+      estimator = std::make_unique<TruthRecordingEstimator>(std::move(averaging), world, config, on_subgoal_truth);
+    else
+      estimator = std::move(averaging);
   }
   return planning::CreateLspPlanner(std::move(estimator), config.lsp, config.planning, world.bounds, ToString(kind));
 }
@@ -118,13 +152,14 @@ int NearestFrontier(const std::vector<mapping::Frontier>& frontiers, const Vec2&
 // does not recover.
 class NavigationPolicy : public AgentPolicy {
  public:
-  NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind)
+  NavigationPolicy(const core::World& world, const Config& config, GoalPlanner kind,
+                   const SubgoalTruthHook& on_subgoal_truth)
       : world_(world),
         goal_(world.goal),
         region_(world.bounds),
         options_(config.navigation),
         planning_(config.planning),
-        planner_(CreateGoalPlanner(world, config, kind, &cells_)),
+        planner_(CreateGoalPlanner(world, config, kind, on_subgoal_truth, &cells_)),
         true_map_(kind == GoalPlanner::kKnown
                       ? std::optional<mapping::MapView>(WithRegionWalls(TrueMap(world), region_))
                       : std::nullopt),
@@ -356,7 +391,7 @@ std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name) {
 NavigationResult RunNavigationTrial(const core::World& world, const Config& config, const NavigationTrialOptions& o,
                                     uint64_t seed, mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();
-  NavigationPolicy policy(world, config, o.planner);
+  NavigationPolicy policy(world, config, o.planner, o.on_subgoal_truth);
   policy.on_decision = o.on_decision;
   policy.on_plan = o.on_plan;
   LoopOptions lo;

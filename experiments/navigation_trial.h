@@ -50,6 +50,11 @@ struct NavigationTrialOptions {
   std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
   // Called every step that does not end the trial, before the agent moves, with what the planner decided.
   std::function<void(const NavigationDecision&)> on_decision;
+  // Planner "lsp": called at every estimate with each frontier piece the network's outputs covered, its
+  // estimate (calibrated as lsp.calibration says) beside its true properties (what the oracle would get).
+  std::function<void(const std::vector<planning::SubgoalProperties>& estimates,
+                     const std::vector<planning::SubgoalProperties>& truth)>
+      on_subgoal_truth;
 };
 
 struct NavigationResult {

@@ -66,6 +66,7 @@ std::vector<SubgoalProperties> CellAveragingEstimator::Estimate(const SubgoalGri
   pending_.clear();
   const size_t n = distances.properties.size();
   std::vector<SubgoalProperties> out(n);
+  seen_.assign(n, 0);
   for (size_t f = 0; f < n; ++f) {
     Sum total;
     for (int c : grid.cells(f)) {
@@ -76,8 +77,10 @@ std::vector<SubgoalProperties> CellAveragingEstimator::Estimate(const SubgoalGri
       total.exploration += it->second.exploration;
       total.count += it->second.count;
     }
-    if (total.count > 0)
-      out[f] = {total.ps / total.count, total.delta_success / total.count, total.exploration / total.count};
+    if (total.count == 0) continue;
+    seen_[f] = 1;
+    out[f] = calibration_.Apply(
+        {total.ps / total.count, total.delta_success / total.count, total.exploration / total.count});
   }
   return out;
 }

@@ -23,6 +23,7 @@ void LspOptions::Validate() const {
   if (piece_length > 0 && piece_length < cell)
     throw core::ConfigError("<options>", "lsp.piece_length", std::to_string(piece_length),
                             "must be 0 (frontiers whole) or at least lsp.cell (" + std::to_string(cell) + ")");
+  calibration.Validate("<options: lsp.calibration>");
 }
 
 namespace {

@@ -12,6 +12,7 @@
 #include "core/option_fields.h"
 #include "core/world.h"
 #include "planning/planner.h"
+#include "planning/subgoal_calibration.h"
 #include "planning/subgoal_ordering.h"
 
 namespace toponav::planning {
@@ -37,6 +38,10 @@ struct LspOptions {
   // Frontiers longer than this are cut into pieces of equal length, each ordered as a subgoal of its own, so
   // the agent crosses a long frontier where the estimates say the way goes on (world units; 0: never cut).
   double piece_length = 35.0;
+  // What the learned estimator's Ps means (YAML key lsp.calibration: a file that
+  // experiments/subgoal_calibration.h reads and writes); empty: as the network gives it.  The oracle's
+  // true properties are never mapped.
+  SubgoalCalibration calibration;
   static const core::OptionFields<LspOptions>& Fields();  // YAML keys (under lsp:) and their ranges
   void Validate() const;  // throws core::ConfigError ("lsp.piece_length", ...)
 };

@@ -9,6 +9,7 @@
 #include "experiments/cli_parse.h"
 #include "experiments/datagen.h"
 #include "experiments/sensor_eval.h"
+#include "experiments/subgoal_calibration.h"
 #include "experiments/subgoal_data.h"
 #include "experiments/subgoal_eval.h"
 #include "experiments/subgoal_export.h"
@@ -163,7 +164,7 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainArgs* a) {
 // ---------------------------------------------------------------- eval-sensor
 
 struct EvalSensorArgs {
-  std::string config, model, kind, seeds = "10000-10019", out;
+  std::string config, model, kind, seeds = "10000-10019", out, calibrate;
   int samples = 10;
   bool subgoal = false;
   int every = 6;
@@ -201,7 +202,32 @@ int RunEvalSubgoal(const EvalSensorArgs& a) {
   return 0;
 }
 
+// --subgoal --calibrate FILE: LSP runs through the --seeds mazes with the network's outputs as they are, and the
+// map of Ps to the true share of its bin (experiments/subgoal_calibration.h), written to FILE.
+int RunCalibrateSubgoal(const EvalSensorArgs& a) {
+  const experiments::Config cfg = LoadWithModel(a.config, a.model);
+  const std::vector<uint64_t> seeds = experiments::ParseSeeds(a.seeds);
+  for (uint64_t s : seeds)
+    if (s >= 10000)
+      throw core::ConfigError("<command line>", "--seeds", a.seeds,
+                              "calibrate on tuning mazes (seeds below 10000): benchmark seeds measure, never tune");
+  const auto samples = experiments::MeasurePieceEstimates(
+      cfg, seeds, [](int done, int total) { std::cerr << fmt::format("[calibrate] {}/{} mazes\n", done, total); });
+  const experiments::CalibrationFit fit = experiments::FitSubgoalCalibration(samples);
+  const std::string measured = fmt::format(
+      "guided mazes {} ({} frontier piece estimates, {} of them with Ps 1), model {}", a.seeds, fit.samples,
+      fit.successes, cfg.sensor.learned.model);
+  fmt::print("{}:\n  Ps cross-entropy {:.3f} -> {:.3f}\n", measured, fit.cross_entropy[0], fit.cross_entropy[1]);
+  const std::string yaml = experiments::SubgoalCalibrationYaml(
+      fit.calibration, {"What the subgoal network's Ps means: [estimate, share of pieces with Ps 1] (lsp.calibration).",
+                        "Measured by toponav eval-sensor --subgoal --calibrate on " + measured + "."});
+  fmt::print("{}", yaml);
+  WriteTextFile(a.calibrate, yaml);
+  return 0;
+}
+
 int RunEvalSensor(const EvalSensorArgs& a) {
+  if (a.subgoal && !a.calibrate.empty()) return RunCalibrateSubgoal(a);
   if (a.subgoal) return RunEvalSubgoal(a);
   const experiments::Config cfg = LoadWithModel(a.config, a.model);
   experiments::SensorEvalOptions o;
@@ -263,6 +289,10 @@ CLI::App* AddEvalSensorCommand(CLI::App& app, EvalSensorArgs* a) {
                 "Score a subgoal (LSP) network's frontier estimates instead: Ps AUC, cross-entropy, cost errors, "
                 "frontier order by exploration cost along runs through --seeds (optimistic in guided mazes, searches "
                 "elsewhere; the config's sensor drives them)");
+  cmd->add_option("--calibrate", a->calibrate,
+                  "With --subgoal: run planner lsp through --seeds (tuning mazes, below 10000) instead, and write to "
+                  "this file what its Ps means (the true share of each bin; lsp.calibration reads it)")
+      ->needs(cmd->get_option("--subgoal"));
   cmd->add_option("--every", a->every, "With --subgoal: a sample every this many steps")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));

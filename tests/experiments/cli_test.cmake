@@ -259,6 +259,13 @@ expect_contains("${OUT}" "guided_maze 1 worlds")  # the config's subgoal_data.ki
 expect_contains("${OUT}" "frontier order by it")
 run(2 ${TOPONAV} eval-sensor --subgoal --config ${WORK}/lsp.yaml --model ${SOURCE_DIR}/models/vertex_net_cpu.pt --seeds 7003-7003 --every 25)
 expect_contains("${ERR}" "not a subgoal model")
+# eval-sensor --subgoal --calibrate measures on tuning mazes only
+run(2 ${TOPONAV} eval-sensor --subgoal --calibrate ${WORK}/cal.yaml --model ${WORK}/lsp_train/model.pt --seeds 9999-10000)
+expect_contains("${ERR}" "tuning mazes")
+# a config naming a calibration file that is not there
+file(WRITE ${WORK}/bad_cal.yaml "lsp:\n  calibration: no_such_calibration.yaml\n")
+run(2 ${TOPONAV} trial --config ${WORK}/bad_cal.yaml --kind guided_maze --seed 7003 --planner lsp --max-steps 2 --out ${WORK}/bad_cal)
+expect_contains("${ERR}" "lsp.calibration")
 # eval-sensor: the trained model's scores, and a calibrated noisy-sensor block that is itself a valid config
 run(0 ${TOPONAV} eval-sensor --model ${WORK}/train/model.pt --kind labyrinth --seeds 100-100 --samples-per-world 2 --out ${WORK}/calibrated.yaml)
 expect_contains("${OUT}" "F1")

@@ -44,6 +44,19 @@ TEST(Config, ValuesAreRead) {
   EXPECT_EQ(c.demo.seed, 12345u);
 }
 
+TEST(Config, TheLspCalibrationFileIsReadFromBesideTheConfigAndAMissingOneIsAnErrorNamingTheKey) {
+  const auto dir = std::filesystem::temp_directory_path() / "toponav_config_calibration";
+  std::filesystem::create_directories(dir / "models");
+  std::ofstream(dir / "models" / "cal.yaml") << "ps: [[0.1, 0.0], [0.9, 0.8]]\n";
+  const Config c = ParseConfig("lsp:\n  calibration: models/cal.yaml\n", (dir / "run.yaml").string());
+  ASSERT_EQ(c.lsp.calibration.ps.knots.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.lsp.calibration.ps(0.9), 0.8);
+  const core::ConfigError e = ErrorOf("lsp:\n  calibration: models/none.yaml\n");
+  EXPECT_NE(std::string(e.what()).find("lsp.calibration"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("models/none.yaml"), std::string::npos) << e.what();
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Config, OpenWorldSettingsFormOneBlock) {
   const Config d = ParseConfig("", "empty.yaml");
   EXPECT_EQ(d.open_world.mcmc_every, 2);
@@ -264,7 +277,7 @@ TEST(Config, AFrontierPieceShorterThanTheLspCellIsAnError) {
 }
 
 TEST(Config, AHeldAgentScansBeforeTheStuckTestEndsItsTrial) {
-  EXPECT_EQ(Config{}.navigation.scan_when_held, 0) << "off unless set";
+  EXPECT_EQ(NavigationOptions{}.scan_when_held, 0) << "off unless set";
   EXPECT_EQ(ParseConfig("navigation:\n  scan_when_held: 20\n", "k.yaml").navigation.scan_when_held, 20);
   const auto e = ErrorOf("navigation:\n  stuck_window: 30\n  scan_when_held: 30\n");
   EXPECT_EQ(e.key(), "navigation.scan_when_held");

@@ -166,11 +166,22 @@ TEST(NavigationTrial, LspWithTheLearnedSubgoalNetworkPlansWithItsEstimates) {
   NavigationTrialOptions o;
   o.planner = GoalPlanner::kLsp;
   o.max_steps = 8;
+  size_t pieces = 0;
+  o.on_subgoal_truth = [&](const std::vector<planning::SubgoalProperties>& estimates,
+                           const std::vector<planning::SubgoalProperties>& truth) {
+    ASSERT_EQ(estimates.size(), truth.size());
+    for (size_t f = 0; f < truth.size(); ++f) {
+      EXPECT_TRUE(truth[f].ps == 0.0 || truth[f].ps == 1.0) << truth[f].ps;
+      EXPECT_FALSE(estimates[f].ps == 1.0 && estimates[f].exploration == 0.0) << "an unseen piece's default";
+    }
+    pieces += truth.size();
+  };
   const NavigationResult r = RunNavigationTrial(sim::GenerateWorld(core::WorldKind::kGuidedMaze, {}, 7004), cfg, o, 1);
   ASSERT_FALSE(r.frontier_ps.empty());
   bool estimated = false;
   for (const auto& e : r.frontier_ps) estimated = estimated || e.ps < 0.99;
   EXPECT_TRUE(estimated) << "every frontier kept the optimistic default";
+  EXPECT_GT(pieces, 0u) << "the pieces the network covered, each with its true properties";
 }
 
 // A trial of 'cfg' in tuning maze 'seed'.

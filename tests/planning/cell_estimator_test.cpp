@@ -62,6 +62,27 @@ TEST(CellAveragingEstimator, AveragesEachFrontiersCellsOverTheObservationsThatSe
   EXPECT_EQ(e.observations(), 3u);
 }
 
+TEST(CellAveragingEstimator, ACalibratedEstimatorMapsThePsOfSeenFrontiersAndLeavesUnseenOnesOptimistic) {
+  const Scene s;
+  const core::World w = ::toponav::testing::DeadEndMaze();
+  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
+  const OrderingProblem d = grid.Distances();
+  SubgoalCalibration c;
+  c.ps.knots = {{0.0, 0.0}, {0.5, 0.2}, {1.0, 1.0}};
+  CellAveragingEstimator e(10, c);
+  auto p = e.Estimate(grid, d);
+  EXPECT_EQ(p[1].ps, 1.0) << "nothing seen yet: the optimistic default, not mapped";
+  EXPECT_EQ(p[1].exploration, 0.0);
+  EXPECT_EQ(e.seen(), std::vector<char>(p.size(), 0));
+  e.Observe(Observed({7, 7, core::kPi / 2}, 0.75f, 0.25f, 50.0f));
+  p = e.Estimate(grid, d);
+  EXPECT_NEAR(p[1].ps, 0.6, 1e-6) << "0.75 halfway between the knots at 0.5 (0.2) and 1 (1)";
+  EXPECT_NEAR(p[0].ps, 0.1, 1e-6);
+  EXPECT_NEAR(p[0].exploration, 50.0, 1e-6) << "the costs as the network gives them";
+  EXPECT_NEAR(p[0].delta_success, 10.0, 1e-6);
+  EXPECT_EQ(e.seen(), std::vector<char>(p.size(), 1));
+}
+
 TEST(CellAveragingEstimator, KeepsOnlyGridsWithTheThreeChannels) {
   CellAveragingEstimator e;
   e.Observe(core::Observation{});  // no cells (the noisy sensor): ignored
