@@ -14,9 +14,13 @@ namespace {
 
 using core::Vec2;
 
+// The dead-end maze seen from its start, and its frontier grid (1-unit cells) with the grid's distances.
 struct Scene {
   mapping::MapView view = testing::DeadEndSeenFromStart();
   std::vector<const mapping::Frontier*> frontiers = testing::FrontiersOf(view);
+  core::World world = ::toponav::testing::DeadEndMaze();
+  SubgoalGrid grid{view, frontiers, world.start.position(), world.goal, 1.0, world.bounds};
+  OrderingProblem d = grid.Distances();
 };
 
 // An observation at 'pose' whose grid says Ps 'ahead' within 0.6 rad of straight ahead and 'elsewhere' in
@@ -37,9 +41,8 @@ core::Observation Observed(const core::Pose2& pose, float ahead, float elsewhere
 
 TEST(CellAveragingEstimator, AveragesEachFrontiersCellsOverTheObservationsThatSeeIt) {
   const Scene s;
-  const core::World w = ::toponav::testing::DeadEndMaze();
-  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
-  const OrderingProblem d = grid.Distances();
+  const SubgoalGrid& grid = s.grid;
+  const OrderingProblem& d = s.d;
   CellAveragingEstimator e;
   EXPECT_EQ(e.Estimate(grid, d)[1].ps, 1.0) << "nothing seen yet: the optimistic default";
   const core::Pose2 up{7, 7, core::kPi / 2};  // the stem's top ahead, the dead end to the right
@@ -64,9 +67,8 @@ TEST(CellAveragingEstimator, AveragesEachFrontiersCellsOverTheObservationsThatSe
 
 TEST(CellAveragingEstimator, ACalibratedEstimatorMapsThePsOfSeenFrontiersAndLeavesUnseenOnesOptimistic) {
   const Scene s;
-  const core::World w = ::toponav::testing::DeadEndMaze();
-  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
-  const OrderingProblem d = grid.Distances();
+  const SubgoalGrid& grid = s.grid;
+  const OrderingProblem& d = s.d;
   SubgoalCalibration c;
   c.ps.knots = {{0.0, 0.0}, {0.5, 0.2}, {1.0, 1.0}};
   CellAveragingEstimator e(10, c);
@@ -99,9 +101,8 @@ TEST(CellAveragingEstimator, KeepsOnlyGridsWithTheThreeChannels) {
 
 TEST(CellAveragingEstimator, AnEstimateSettlesAsObservationsAccumulate) {
   const Scene s;
-  const core::World w = ::toponav::testing::DeadEndMaze();
-  const SubgoalGrid grid(s.view, s.frontiers, w.start.position(), w.goal, 1.0, w.bounds);
-  const OrderingProblem d = grid.Distances();
+  const SubgoalGrid& grid = s.grid;
+  const OrderingProblem& d = s.d;
   const core::Pose2 up{7, 7, core::kPi / 2};
   CellAveragingEstimator e(4);
   for (int i = 0; i < 9; ++i) {
@@ -116,7 +117,8 @@ TEST(CellAveragingEstimator, AnEstimateSettlesAsObservationsAccumulate) {
   // The same place under another frontier grid (the map's frontier grew a little): the sums stay.
   mapping::MapView grown = s.view;
   grown.frontiers[1].id = 9;
-  const SubgoalGrid regrid(grown, testing::FrontiersOf(grown), w.start.position(), w.goal, 1.0, w.bounds);
+  const SubgoalGrid regrid(grown, testing::FrontiersOf(grown), s.world.start.position(), s.world.goal, 1.0,
+                           s.world.bounds);
   EXPECT_NEAR(e.Estimate(regrid, regrid.Distances())[1].ps, (8.1 + 0.1 + 4 * 0.1) / 14, 1e-6);
 }
 
