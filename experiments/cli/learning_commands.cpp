@@ -206,6 +206,9 @@ int RunEvalSubgoal(const EvalSensorArgs& a) {
 // map of Ps to the true share of its bin (experiments/subgoal_calibration.h), written to FILE.
 int RunCalibrateSubgoal(const EvalSensorArgs& a) {
   const experiments::Config cfg = LoadWithModel(a.config, a.model);
+  if (cfg.sensor.kind != experiments::SensorKind::kLearned || cfg.sensor.learned.model.empty())
+    throw core::ConfigError(a.config.empty() ? "<defaults>" : a.config, "sensor.model", "",
+                            "--calibrate needs a subgoal model: --model, or a config whose sensor is learned");
   const std::vector<uint64_t> seeds = experiments::ParseSeeds(a.seeds);
   for (uint64_t s : seeds)
     if (s >= 10000)
@@ -213,6 +216,8 @@ int RunCalibrateSubgoal(const EvalSensorArgs& a) {
                               "calibrate on tuning mazes (seeds below 10000): benchmark seeds measure, never tune");
   const auto samples = experiments::MeasurePieceEstimates(
       cfg, seeds, [](int done, int total) { std::cerr << fmt::format("[calibrate] {}/{} mazes\n", done, total); });
+  if (samples.empty())
+    throw core::DataError(cfg.sensor.learned.model, "no frontier piece got an estimate: not a subgoal model?");
   const experiments::CalibrationFit fit = experiments::FitSubgoalCalibration(samples);
   const std::string measured = fmt::format(
       "guided mazes {} ({} frontier piece estimates, {} of them with Ps 1), model {}", a.seeds, fit.samples,

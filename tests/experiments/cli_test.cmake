@@ -262,6 +262,8 @@ expect_contains("${ERR}" "not a subgoal model")
 # eval-sensor --subgoal --calibrate measures on tuning mazes only
 run(2 ${TOPONAV} eval-sensor --subgoal --calibrate ${WORK}/cal.yaml --model ${WORK}/lsp_train/model.pt --seeds 9999-10000)
 expect_contains("${ERR}" "tuning mazes")
+run(2 ${TOPONAV} eval-sensor --subgoal --calibrate ${WORK}/cal.yaml --seeds 7003-7003)
+expect_contains("${ERR}" "needs a subgoal model")
 # a config naming a calibration file that is not there
 file(WRITE ${WORK}/bad_cal.yaml "lsp:\n  calibration: no_such_calibration.yaml\n")
 run(2 ${TOPONAV} trial --config ${WORK}/bad_cal.yaml --kind guided_maze --seed 7003 --planner lsp --max-steps 2 --out ${WORK}/bad_cal)
