@@ -50,6 +50,7 @@ const core::OptionFields<MapperOptions>& MapperOptions::Fields() {
       {"wall_min_view_angle", &O::wall_min_view_angle, 0.0, 1.0},
       {"wall_on_segment_tolerance", &O::wall_on_segment_tolerance, 0.0, 100.0},
       {"wall_past_vertex_tolerance", &O::wall_past_vertex_tolerance, 0.0, 100.0},
+      {"wall_front_vertex_tolerance", &O::wall_front_vertex_tolerance, 0.0, 100.0},
       {"wall_past_detection_min", &O::wall_past_detection_min},
       {"wall_evidence_min", &O::wall_evidence_min},
       {"edge_log_floor", &O::edge_log_floor, -100.0, -1e-6},
@@ -136,7 +137,7 @@ void Mapper::Impl::Add(const core::Observation& z) {
     ob.cov[k] = R[k].ldlt();
   }
   ob.vid = core.vertices.Update(zpos, R);
-  core.walls.Add(ob, core.vertices.size());
+  core.walls.Add(ob, core.vertices);
   core.obs.push_back(std::move(ob));
   internal::RefreshStar(&core, core.obs.size() - 1);
 }

@@ -34,6 +34,16 @@ struct MapperOptions {
   double wall_on_segment_tolerance = 2.0;  // ... not counting detections within this distance of the segment
                                           // between them whose vertex is not in the map (a false detection on
                                           // the wall); 0: count all (the reference)
+  // An observation that missed a vertex with enough detections lying between its pose and the segment
+  // between two of its detections (or within this distance, world units, of the two sight lines, and farther
+  // than it from the segment and its ends) gives that pair no wall evidence while the vertex is in the map:
+  // seen along a wall edge-on, its far end shows just past the near corner, and where the sensor misses that
+  // corner, the far end and the corner's other neighbour make a pair whose wall cuts across the solid corner.
+  // A vertex counts as missed if it had enough detections (min_detections) when the observation was added
+  // and is not one of the pair's detections or those between them in bearing (one detected outside the
+  // pair's bearing interval, its map position in front of the segment, was missed where it stands).
+  // Leaving a sample out moves the pair's average either way.  0: every observation counts (the reference).
+  double wall_front_vertex_tolerance = 0.0;
   // Of a map wall a-b and a map wall a-c passing within this distance (world units) of b and ending more than
   // twice this past it, the planners and known space get a-b only (mapping/internal/walls_past_vertices.h);
   // 0: both.

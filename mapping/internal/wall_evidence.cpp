@@ -11,15 +11,52 @@ bool WallEvidence::OnSegment(const Vec2& p, const Vec2& a, const Vec2& b) const 
   return o_.wall_on_segment_tolerance > 0 && core::NearSegmentInterior(p, {a, b}, o_.wall_on_segment_tolerance);
 }
 
+std::vector<int> WallEvidence::FrontCandidates(const Obs& ob, const VertexStore& vertices) const {
+  std::vector<int> out;
+  if (o_.wall_front_vertex_tolerance <= 0) return out;
+  const Vec2 p = ob.pose.position();
+  for (size_t id = 0; id < vertices.size(); ++id)
+    if (vertices.Seen(int(id)) && core::Distance(vertices.Pos(int(id)), p) < o_.max_range) out.push_back(int(id));
+  return out;
+}
+
+void WallEvidence::AddFront(const Obs& ob, size_t i, size_t steps, const std::vector<int>& candidates,
+                            const VertexStore& vertices, std::vector<int>* out) const {
+  const double tol = o_.wall_front_vertex_tolerance;
+  const size_t n = ob.det.size();
+  const Vec2 p = ob.pose.position(), a = ob.at[i], b = ob.at[(i + steps) % n], ab = b - a;
+  const double len = core::Norm(ab);
+  if (len < 1e-9) return;
+  const double pose_side = core::Cross(ab, p - a);
+  for (int id : candidates) {
+    // The pair's ends and the detections between them count already; a vertex detected out of bearing
+    // order (outside the pair's interval, its map position in front) does not.
+    bool between = false;
+    for (size_t t = 0; t <= steps && !between; ++t) between = ob.vid[(i + t) % n] == id;
+    if (between) continue;
+    const Vec2 x = vertices.Pos(id);
+    const double side = core::Cross(ab, x - a) / len;  // signed distance from the segment's line
+    if (side * pose_side <= 0 || std::abs(side) <= tol) continue;
+    if (core::Distance(x, a) <= tol || core::Distance(x, b) <= tol) continue;
+    const bool in_wedge = core::Cross(a - p, x - p) >= 0 && core::Cross(x - p, b - p) >= 0;
+    if (in_wedge || core::DistanceToSegment(x, {p, a}) < tol || core::DistanceToSegment(x, {p, b}) < tol)
+      out->push_back(id);
+  }
+}
+
 // Every pair less than pi apart, R = i and L = j counter-clockwise of it; each detection between them scales
 // the evidence by wall_skip_damping (vertexnav.md §2.4) -- except, beyond the reference, a detection lying on
 // the segment between the two (within wall_on_segment_tolerance) damps it only while its vertex is in the
 // map: a false detection on a wall that the map rejects does not hide the wall, while a doorway's jamb on the
 // line does once it is mapped, and such a pair's evidence needs both ends to say a wall runs on
-// (wall_past_detection_min).
-void WallEvidence::Add(const Obs& ob, size_t num_vertices) {
-  const size_t n = ob.det.size();
+// (wall_past_detection_min).  A sample whose observation missed a vertex lying between its pose and the
+// segment (wall_front_vertex_tolerance) does not count while that vertex is in the map: seen along a wall
+// edge-on, the wall's far end shows just past its near corner, and when the sensor misses that corner, the
+// far end and the corner's other neighbour are a pair across the solid corner.
+void WallEvidence::Add(const Obs& ob, const VertexStore& vertices) {
+  const size_t n = ob.det.size(), num_vertices = vertices.size();
   const std::vector<Vec2>& at = ob.at;
+  const std::vector<int> candidates = FrontCandidates(ob, vertices);
   if (spans_.size() < num_vertices) spans_.resize(num_vertices);
   if (neighbours_.size() < num_vertices) neighbours_.resize(num_vertices);
   for (size_t i = 0; i < n; ++i) {
@@ -32,9 +69,11 @@ void WallEvidence::Add(const Obs& ob, size_t num_vertices) {
       CondSample c;
       for (size_t t = 1; t < s; ++t) {
         const size_t k = (i + t) % n;
-        if (ob.vid[k] != a && ob.vid[k] != b && OnSegment(at[k], at[i], at[j])) c.on_segment.push_back(ob.vid[k]);
+        if (ob.vid[k] != a && ob.vid[k] != b && OnSegment(at[k], at[i], at[j])) c.damping.push_back(ob.vid[k]);
         else ++fixed;
       }
+      const bool past_detection = !c.damping.empty();
+      AddFront(ob, i, s, candidates, vertices, &c.front);
       const uint64_t key = WallKey(a, b);
       Stats& w = walls_[key];
       if (w.count == 0) {
@@ -45,17 +84,18 @@ void WallEvidence::Add(const Obs& ob, size_t num_vertices) {
       const double no_i = core::NoWallCcw(ob.det[i].labels), no_j = core::NoWallCw(ob.det[j].labels);
       // Past a detection both ends must say wall (closed worlds: open-world buildings have no doorways).
       const bool both =
-          !o_.open_region && (o_.wall_evidence_min || (!c.on_segment.empty() && o_.wall_past_detection_min));
+          !o_.open_region && (o_.wall_evidence_min || (past_detection && o_.wall_past_detection_min));
       c.value = std::pow(o_.wall_skip_damping, double(fixed)) *
                 (both ? 1.0 - std::max(no_i, no_j) : 1.0 - 0.5 * (no_i + no_j));
-      if (c.on_segment.empty() || c.value < 1e-9) {
+      if (c.front.empty() && (c.damping.empty() || c.value < 1e-9)) {
         w.sum += c.value;
         continue;
       }
-      for (int id : c.on_segment) {
-        auto& sp = spans_[size_t(id)];
-        if (std::find(sp.begin(), sp.end(), key) == sp.end()) sp.push_back(key);
-      }
+      for (const auto* ids : {&c.damping, &c.front})
+        for (int id : *ids) {
+          auto& sp = spans_[size_t(id)];
+          if (std::find(sp.begin(), sp.end(), key) == sp.end()) sp.push_back(key);
+        }
       w.cond.push_back(std::move(c));
     }
   }
@@ -65,13 +105,18 @@ double WallEvidence::Prob(int a, int b, const std::vector<char>& mapped, int fli
   auto it = walls_.find(WallKey(a, b));
   if (it == walls_.end()) return 0.0;
   const Stats& w = it->second;
+  auto in_map = [&](int id) { return id == flip ? flip_on : (size_t(id) < mapped.size() && mapped[size_t(id)]); };
   double sum = w.sum;
+  int count = w.count;
   for (const auto& c : w.cond) {
-    int damp = 0;
-    for (int id : c.on_segment) damp += id == flip ? flip_on : (size_t(id) < mapped.size() && mapped[size_t(id)]);
+    if (std::any_of(c.front.begin(), c.front.end(), in_map)) {
+      --count;
+      continue;
+    }
+    const auto damp = std::count_if(c.damping.begin(), c.damping.end(), in_map);
     sum += c.value * std::pow(o_.wall_skip_damping, double(damp));
   }
-  return sum / (w.count + 1);  // shrinks one sighting to 1/2
+  return sum / (count + 1);  // shrinks one sighting to 1/2
 }
 
 std::vector<Wall> WallEvidence::MappedWalls(const std::vector<char>& mapped) const {

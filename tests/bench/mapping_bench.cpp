@@ -41,10 +41,11 @@ const Drive& LongDrive() {
   return drive;
 }
 
-// The mapper after 'steps' steps of the drive, MCMC every 5 steps.
-std::unique_ptr<mapping::Mapper> MapperAt(int steps, core::Rng& rng) {
+// The mapper after 'steps' steps of the drive, MCMC every 5 steps (wall_front_vertex_tolerance 'front').
+std::unique_ptr<mapping::Mapper> MapperAt(int steps, core::Rng& rng, double front = 0.0) {
   mapping::MapperOptions o;
   o.world_bounds = LongDrive().world.bounds;
+  o.wall_front_vertex_tolerance = front;
   auto m = std::make_unique<mapping::Mapper>(o);
   for (int s = 0; s < steps; ++s) {
     m->AddObservation(LongDrive().observations[size_t(s)]);
@@ -54,11 +55,12 @@ std::unique_ptr<mapping::Mapper> MapperAt(int steps, core::Rng& rng) {
   return m;
 }
 
-// Per-step update (AddObservation + View) over the 20 steps starting at step range(0).
+// Per-step update (AddObservation + View) over the 20 steps starting at step range(0), with
+// wall_front_vertex_tolerance range(1) (the maze configs' 1: every pair checks the map vertices in front).
 void BM_MapStep(benchmark::State& state) {
   const int start = int(state.range(0));
   core::Rng rng(3);
-  auto m = MapperAt(start, rng);
+  auto m = MapperAt(start, rng, double(state.range(1)));
   int s = start;
   for (auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -73,7 +75,11 @@ void BM_MapStep(benchmark::State& state) {
     state.ResumeTiming();
   }
 }
-BENCHMARK(BM_MapStep)->Arg(50)->Arg(200)->Arg(400)->Iterations(20)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MapStep)
+    ->ArgsProduct({{50, 200, 400}, {0, 1}})
+    ->Iterations(20)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 // One MCMC call (50 samples) on the map of step range(0).
 void BM_Mcmc50(benchmark::State& state) {

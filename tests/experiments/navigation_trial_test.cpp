@@ -317,6 +317,21 @@ TEST(NavigationTrial, AWallDrawnPastAnotherWallsEndDoesNotCloseTheWayToTheGoal) 
   EXPECT_FALSE(RunNavigationTrial(world, cfg, o, 7249).reached) << "with both walls drawn the way stays closed";
 }
 
+TEST(NavigationTrial, AWallAcrossACornerTheSensorMissedEdgeOnDoesNotSealTheGoalOff) {
+  // Tuning maze 5028, optimistic: from the corridor's end, looking along the wall (18,-70)-(48,-70) edge-on,
+  // three views missed its near corner, so its far end and the corner's other neighbour (18,-18) came next to
+  // each other in bearing, and their wall across the solid corner sealed the goal (33,-55) off: the run ended
+  // "stuck" after 212 steps.  Those views give that pair no evidence while the corner is in the map
+  // (mapping.wall_front_vertex_tolerance).
+  Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
+  ASSERT_GT(cfg.mapping.wall_front_vertex_tolerance, 0.0);
+  const NavigationResult r = RunMaze(cfg, 5028, GoalPlanner::kOptimistic, 120);  // the goal after 77 steps
+  EXPECT_TRUE(r.reached) << r.end_reason << " after " << r.steps << " steps";
+  EXPECT_LT(r.distance, 1.5 * r.shortest) << "travelled " << r.distance << ", shortest way " << r.shortest;
+  cfg.mapping.wall_front_vertex_tolerance = 0;
+  EXPECT_FALSE(RunMaze(cfg, 5028, GoalPlanner::kOptimistic, 120).reached) << "every sighting counted: cut off";
+}
+
 TEST(NavigationTrial, AnAgentStandingWhereItsRecoveryLedItTriesTheWallBesideItAsAnOpening) {
   // Tuning maze 8731, optimistic: the goal lies in a pocket 12.6 units past the agent, and a false wall from
   // a corner beyond the pocket's mouth to one beyond its far side cuts it off (the pocket's far corners

@@ -100,6 +100,46 @@ TEST(Mapper, OfTwoWallsFromACornerTheOnePassingTheOthersEndIsNotDrawnWhenAsked) 
   EXPECT_EQ(drawn.walls.size(), both.walls.size() - 1);
 }
 
+// A corner B = (18, -70) between a wall to A = (48, -70) and a wall to C = (18, -18).  From (6, -78) the
+// sensor sees all three; from (6, -70.6), looking along B-A edge-on, A shows just past B (B lies 0.3 from the
+// sight line to A) and the sensor misses B -- or, 'b_out_of_order', detects it at (18, -70.6), on A's far side
+// in bearing -- so A and C come next to each other in bearing.
+MapView CornerMissedEdgeOn(double front_tolerance, bool b_out_of_order = false) {
+  MapperOptions o;
+  o.world_bounds = core::Aabb2{{-10, -90}, {60, -10}};
+  o.defer_to_mcmc = false;
+  o.wall_front_vertex_tolerance = front_tolerance;
+  Mapper m(o);
+  const Vec2 a{48, -70}, b{18, -70}, c{18, -18};
+  for (int i = 0; i < 3; ++i) {
+    const core::Pose2 pose{6, -78, 0};
+    m.AddObservation(Obs(pose, {Det(pose, a, core::VertexLabel::kCorner), Det(pose, b, core::VertexLabel::kCorner),
+                                Det(pose, c, core::VertexLabel::kCorner)}));
+  }
+  for (int i = 0; i < 5; ++i) {
+    const core::Pose2 pose{6, -70.6, 0};
+    std::vector<core::Detection> d{Det(pose, a, core::VertexLabel::kCorner), Det(pose, c, core::VertexLabel::kCorner)};
+    if (b_out_of_order) d.push_back(Det(pose, {18, -70.6}, core::VertexLabel::kCorner));
+    m.AddObservation(Obs(pose, d));
+  }
+  return m.View();
+}
+
+TEST(Mapper, ASightingThatMissedAMapVertexInFrontOfTwoDetectionsCountsForNoWallWhenAsked) {
+  for (const bool out_of_order : {false, true}) {
+    SCOPED_TRACE(out_of_order ? "B detected on A's far side in bearing" : "B missed");
+    const MapView reference = CornerMissedEdgeOn(0.0, out_of_order);
+    ASSERT_EQ(reference.vertices.size(), 3u);
+    EXPECT_TRUE(HasWall(reference, {48, -70}, {18, -18})) << "the wall across the solid corner";
+    const MapView damped = CornerMissedEdgeOn(1.0, out_of_order);
+    EXPECT_FALSE(HasWall(damped, {48, -70}, {18, -18}));
+    EXPECT_TRUE(HasWall(damped, {48, -70}, {18, -70}));
+    if (out_of_order) continue;  // B-C: A lies between them in bearing in the edge-on views (damped either way)
+    EXPECT_TRUE(HasWall(damped, {18, -70}, {18, -18}));
+    EXPECT_EQ(damped.walls.size(), 2u);
+  }
+}
+
 TEST(Mapper, FalseDetectionsOnAWallDoNotHideIt) {
   const MapView view = SquareWithFalseDetectionsOnAWall(2.0);
   EXPECT_EQ(view.vertices.size(), 4u);
