@@ -11,16 +11,20 @@ bool WallEvidence::OnSegment(const Vec2& p, const Vec2& a, const Vec2& b) const 
   return o_.wall_on_segment_tolerance > 0 && core::NearSegmentInterior(p, {a, b}, o_.wall_on_segment_tolerance);
 }
 
-std::vector<int> WallEvidence::FrontCandidates(const Obs& ob, const VertexStore& vertices) const {
-  std::vector<int> out;
+std::vector<WallEvidence::FrontCandidate> WallEvidence::FrontCandidates(const Obs& ob,
+                                                                         const VertexStore& vertices) const {
+  std::vector<FrontCandidate> out;
   if (o_.wall_front_vertex_tolerance <= 0) return out;
+  std::vector<int> detection(vertices.size(), -1);  // one detection a vertex at most (association is 1:1)
+  for (size_t k = 0; k < ob.vid.size(); ++k) detection[size_t(ob.vid[k])] = int(k);
   const Vec2 p = ob.pose.position();
   for (size_t id = 0; id < vertices.size(); ++id)
-    if (vertices.Seen(int(id)) && core::Distance(vertices.Pos(int(id)), p) < o_.max_range) out.push_back(int(id));
+    if (vertices.Seen(int(id)) && core::Distance(vertices.Pos(int(id)), p) < o_.max_range)
+      out.push_back({int(id), detection[id]});
   return out;
 }
 
-void WallEvidence::AddFront(const Obs& ob, size_t i, size_t steps, const std::vector<int>& candidates,
+void WallEvidence::AddFront(const Obs& ob, size_t i, size_t steps, const std::vector<FrontCandidate>& candidates,
                             const VertexStore& vertices, std::vector<int>* out) const {
   const double tol = o_.wall_front_vertex_tolerance;
   const size_t n = ob.det.size();
@@ -28,12 +32,10 @@ void WallEvidence::AddFront(const Obs& ob, size_t i, size_t steps, const std::ve
   const double len = core::Norm(ab);
   if (len < 1e-9) return;
   const double pose_side = core::Cross(ab, p - a);
-  for (int id : candidates) {
+  for (const auto [id, det] : candidates) {
     // The pair's ends and the detections between them count already; a vertex detected out of bearing
     // order (outside the pair's interval, its map position in front) does not.
-    bool between = false;
-    for (size_t t = 0; t <= steps && !between; ++t) between = ob.vid[(i + t) % n] == id;
-    if (between) continue;
+    if (det >= 0 && (size_t(det) + n - i) % n <= steps) continue;
     const Vec2 x = vertices.Pos(id);
     const double side = core::Cross(ab, x - a) / len;  // signed distance from the segment's line
     if (side * pose_side <= 0 || std::abs(side) <= tol) continue;
@@ -56,7 +58,7 @@ void WallEvidence::AddFront(const Obs& ob, size_t i, size_t steps, const std::ve
 void WallEvidence::Add(const Obs& ob, const VertexStore& vertices) {
   const size_t n = ob.det.size(), num_vertices = vertices.size();
   const std::vector<Vec2>& at = ob.at;
-  const std::vector<int> candidates = FrontCandidates(ob, vertices);
+  const std::vector<FrontCandidate> candidates = FrontCandidates(ob, vertices);
   if (spans_.size() < num_vertices) spans_.resize(num_vertices);
   if (neighbours_.size() < num_vertices) neighbours_.resize(num_vertices);
   for (size_t i = 0; i < n; ++i) {
@@ -72,7 +74,6 @@ void WallEvidence::Add(const Obs& ob, const VertexStore& vertices) {
         if (ob.vid[k] != a && ob.vid[k] != b && OnSegment(at[k], at[i], at[j])) c.damping.push_back(ob.vid[k]);
         else ++fixed;
       }
-      const bool past_detection = !c.damping.empty();
       AddFront(ob, i, s, candidates, vertices, &c.front);
       const uint64_t key = WallKey(a, b);
       Stats& w = walls_[key];
@@ -84,7 +85,7 @@ void WallEvidence::Add(const Obs& ob, const VertexStore& vertices) {
       const double no_i = core::NoWallCcw(ob.det[i].labels), no_j = core::NoWallCw(ob.det[j].labels);
       // Past a detection both ends must say wall (closed worlds: open-world buildings have no doorways).
       const bool both =
-          !o_.open_region && (o_.wall_evidence_min || (past_detection && o_.wall_past_detection_min));
+          !o_.open_region && (o_.wall_evidence_min || (!c.damping.empty() && o_.wall_past_detection_min));
       c.value = std::pow(o_.wall_skip_damping, double(fixed)) *
                 (both ? 1.0 - std::max(no_i, no_j) : 1.0 - 0.5 * (no_i + no_j));
       if (c.front.empty() && (c.damping.empty() || c.value < 1e-9)) {

@@ -53,12 +53,16 @@ class WallEvidence {
   bool OnSegment(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) const;
   // Candidates for lying in front of a pair's segment: the vertices that had enough detections when the
   // observation was added, within the mapper's range of the pose (none when wall_front_vertex_tolerance is 0).
-  std::vector<int> FrontCandidates(const Obs& ob, const VertexStore& vertices) const;
+  struct FrontCandidate {
+    int id;   // the vertex
+    int det;  // the observation's detection of it, -1 if none
+  };
+  std::vector<FrontCandidate> FrontCandidates(const Obs& ob, const VertexStore& vertices) const;
   // The candidates (at their positions in 'vertices') lying between the pose and the segment from detection
   // i to detection i + steps (counter-clockwise of it, less than pi on), or within the tolerance of the two
   // sight lines, and farther than it from the segment and its ends; not those of the pair's detections or of
   // the ones between them (a candidate detected elsewhere in bearing counts: its detection missed its place).
-  void AddFront(const Obs& ob, size_t i, size_t steps, const std::vector<int>& candidates,
+  void AddFront(const Obs& ob, size_t i, size_t steps, const std::vector<FrontCandidate>& candidates,
                 const VertexStore& vertices, std::vector<int>* out) const;
 
   MapperOptions o_;
