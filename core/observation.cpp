@@ -5,10 +5,7 @@
 
 namespace toponav::core {
 
-int CellGrid::Channel(const std::string& name) const {
-  const auto it = std::find(channels.begin(), channels.end(), name);
-  return it == channels.end() ? -1 : int(it - channels.begin());
-}
+double RangeScan::Angle(size_t j) const { return 2.0 * kPi * double(j) / double(ranges.size()); }
 
 LabelProbs OneHot(VertexLabel label) {
   LabelProbs p{0, 0, 0, 0};

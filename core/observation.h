@@ -4,7 +4,6 @@
 // (the learned CNN, a recorded folder's), so the loop does not care which one is behind it.
 #include <array>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "core/detection.h"
@@ -33,28 +32,43 @@ struct Detection {
   LabelProbs labels{0.25, 0.25, 0.25, 0.25};
 };
 
-// Per-cell outputs a network returns beside the vertices, on its range-bearing grid (the convention of
-// core::RangeBearingGrid: row r holds the ranges nearest (r + 1) * max_range / rows, column b looks along
-// ColumnToBearing(b, cols)); values are row-major with the channels innermost (index (r * cols + b) *
-// channels + c).  Empty for sensors without such outputs.
-struct CellGrid {
+// A subgoal network's estimates for one cell of its range-bearing grid (paper Sec. V): the probability that
+// the goal can be reached through unknown space there (Ps), the cost of reaching it that way beyond the
+// distance to the frontier (delta_success), and the cost of finding out it cannot (exploration); costs in
+// world units.
+struct SubgoalCell {
+  float ps = 0.0f;
+  float delta_success = 0.0f;
+  float exploration = 0.0f;
+};
+
+// A subgoal network's outputs on its range-bearing grid (the convention of core::RangeBearingGrid: row r
+// holds the ranges nearest (r + 1) * max_range / rows, column b looks along ColumnToBearing(b, cols)),
+// row-major.  Empty for sensors without such outputs.
+struct SubgoalCells {
   int rows = 0, cols = 0;
   double max_range = 0.0;
-  std::vector<std::string> channels;  // what each channel holds (e.g. frontier properties)
-  std::vector<float> values;
+  std::vector<SubgoalCell> values;
   bool empty() const { return values.empty(); }
-  int Channel(const std::string& name) const;  // the index of the channel so named, -1 if none
-  // Requires values.size() == rows * cols * channels.size().
-  float at(int row, int col, int channel) const {
-    return values.at((size_t(row) * size_t(cols) + size_t(col)) * channels.size() + size_t(channel));
-  }
+  // Requires values.size() == rows * cols.
+  const SubgoalCell& at(int row, int col) const { return values.at(size_t(row) * size_t(cols) + size_t(col)); }
+};
+
+// A range ring's scan from the observation's pose (a short-range sensor a config may declare beside the
+// vertex sensor): ray j looks along world direction 2 * pi * j / ranges.size(); ranges[j] is its first hit, or
+// max_range where nothing lies within reach.
+struct RangeScan {
+  double max_range = 0.0;
+  std::vector<double> ranges;
+  double Angle(size_t j) const;  // the world direction of ray j (radians)
 };
 
 struct Observation {
   Pose2 pose;                        // where the agent was (world frame)
   int agent = 0;                     // which agent observed
   std::vector<Detection> detections; // sorted by ascending bearing
-  CellGrid cells;                    // per-cell extras (empty unless the sensor provides them)
+  SubgoalCells subgoal;              // a subgoal network's estimates (empty unless the sensor gives them)
+  std::optional<RangeScan> scan;     // a range ring's scan (only where the config declares one)
 };
 
 // World position of a detection seen from 'pose'.

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
+#include <optional>
 
 #include "core/error.h"
 #include "experiments/sensor_factory.h"
+#include "sim/motion.h"
 
 namespace toponav::experiments {
 
@@ -23,14 +24,15 @@ mapping::MapperOptions MapperOptionsFor(const core::World& world, const Config& 
   return mo;
 }
 
-// Moves every agent one step along its path, letting the policy correct each step; records paths.
-void MoveAgents(const LoopState& state, const std::vector<std::vector<core::Vec2>>& paths, AgentPolicy& policy,
-                sim::MotionSim& motion, core::Rng& rng, LoopResult* r) {
+// Moves every agent one step along its path, nudged where the navigator asks; records paths.
+void MoveAgents(const planning::NavigatorInput& state, const std::vector<std::vector<core::Vec2>>& paths,
+                planning::Navigator& navigator, sim::MotionSim& motion, core::Rng& rng, LoopResult* r) {
   TOPONAV_CHECK(paths.size() == r->paths.size(),
-                "the policy planned " << paths.size() << " paths for " << r->paths.size() << " agents");
+                "the navigator planned " << paths.size() << " paths for " << r->paths.size() << " agents");
   for (size_t a = 0; a < paths.size(); ++a) {
     sim::StepResult s = motion.Step(int(a), paths[a]);
-    s = policy.AfterStep(state, int(a), s, motion, rng);
+    const std::optional<core::Vec2> nudge = navigator.AfterStep(state, int(a), {s.pose, s.distance, s.blocked}, rng);
+    if (nudge) s = motion.Nudge(int(a), *nudge);
     r->distance[a] += s.distance;
     r->paths[a].push_back(s.pose.position());
   }
@@ -58,21 +60,31 @@ void AddToMap(const std::vector<core::Observation>& observations, mapping::Mappe
   }
 }
 
+// This step's observations from 'poses', added to the map, MCMC on its cadence: the map's view (timed in 'r').
+mapping::MapView Sense(const std::vector<core::Pose2>& poses, core::VertexSensorInterface& sensor,
+                       const LoopOptions& o, int step, core::Rng& rng, std::vector<core::Observation>* observations,
+                       LoopResult* r) {
+  const auto t0 = Clock::now();
+  observations->clear();
+  for (size_t a = 0; a < poses.size(); ++a) observations->push_back(sensor.Observe(poses[a], int(a)));
+  AddToMap(*observations, *r->mapper);
+  const auto t1 = Clock::now();
+  if (o.mcmc_every > 0 && step % o.mcmc_every == 0) {
+    r->mapper->SampleMostLikelyMap(rng, o.mcmc_samples);
+    ++r->mcmc_calls;
+  }
+  const auto t2 = Clock::now();
+  mapping::MapView view = r->mapper->View();
+  r->observe_s += Seconds(t0, t1);
+  r->mcmc_s += Seconds(t1, t2);
+  r->view_s += Seconds(t2, Clock::now());
+  return view;
+}
+
 }  // namespace
 
-double PathBudget(const LoopState& state, int reserve_steps) {
-  TOPONAV_CHECK(state.step_length > 0, "step length " << state.step_length);
-  if (state.max_steps <= 0) return std::numeric_limits<double>::infinity();
-  return std::max(0, state.max_steps - state.step - reserve_steps) * state.step_length;
-}
-
-sim::StepResult NudgeRandomly(sim::MotionSim& motion, int agent, double distance, core::Rng& rng) {
-  const double angle = rng.Uniform(-core::kPi, core::kPi);
-  return motion.Nudge(agent, core::Vec2{std::cos(angle), std::sin(angle)} * distance);
-}
-
-LoopResult RunAgentLoop(const core::World& world, const Config& config, const LoopOptions& o, AgentPolicy& policy,
-                        uint64_t seed) {
+LoopResult RunAgentLoop(const core::World& world, const Config& config, const LoopOptions& o,
+                        planning::Navigator& navigator, uint64_t seed) {
   TOPONAV_CHECK(o.num_agents >= 1 && o.max_steps >= 0, "num_agents " << o.num_agents << ", max_steps " << o.max_steps);
   Validate(config);  // a config built in code meets the same rules as a loaded one
   LoopResult r;
@@ -89,8 +101,7 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
     motion.AddAgent(world.start);
     r.paths[size_t(a)].push_back(world.start.position());
   }
-  LoopState state;
-  state.world = &world;
+  planning::NavigatorInput state;
   state.trails = &r.paths;
   state.step_length = motion_options.step_length;
   state.max_steps = o.max_steps;
@@ -100,32 +111,19 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   state.view = &view;
   std::vector<std::vector<core::Vec2>> paths(size_t(o.num_agents));
   for (int step = 0; step < o.max_steps; ++step) {
-    const auto t0 = Clock::now();
     state.step = step;
     state.poses.clear();
     for (int a = 0; a < o.num_agents; ++a) state.poses.push_back(motion.Pose(a));
-    observations.clear();
-    for (int a = 0; a < o.num_agents; ++a) observations.push_back(sensor->Observe(state.poses[size_t(a)], a));
-    AddToMap(observations, mapper);
-    const auto t1 = Clock::now();
-    if (o.mcmc_every > 0 && step % o.mcmc_every == 0) {
-      mapper.SampleMostLikelyMap(rng, o.mcmc_samples);
-      ++r.mcmc_calls;
-    }
-    const auto t2 = Clock::now();
-    view = mapper.View();
+    view = Sense(state.poses, *sensor, o, step, rng, &observations, &r);
     const auto t3 = Clock::now();
-    r.observe_s += Seconds(t0, t1);
-    r.mcmc_s += Seconds(t1, t2);
-    r.view_s += Seconds(t2, t3);
     for (auto& p : paths) p.clear();
     r.steps = step + 1;
-    if (!policy.Plan(state, &paths)) {
-      r.ended_by_policy = true;
+    if (!navigator.Plan(state, &paths)) {
+      r.ended_by_navigator = true;
       r.plan_s += Seconds(t3, Clock::now());
       break;
     }
-    MoveAgents(state, paths, policy, motion, rng, &r);
+    MoveAgents(state, paths, navigator, motion, rng, &r);
     r.plan_s += Seconds(t3, Clock::now());
     if (o.on_step) o.on_step(view, r.paths);
   }

@@ -63,6 +63,7 @@ json RecordJson(const TrialId& id, const std::string& error, int signal = 0) {
 
 json SearchJson(const TrialId& id, const TrialResult& r) {
   json j = RecordJson(id, "");
+  j["sensors"] = r.sensors;
   j["success"] = r.success;
   j["explored"] = r.explored;
   j["steps"] = r.steps;
@@ -85,6 +86,8 @@ json SearchJson(const TrialId& id, const TrialResult& r) {
 
 json NavigationJson(const TrialId& id, const NavigationResult& r) {
   json j = RecordJson(id, "");
+  j["sensors"] = r.sensors;
+  j["privileged"] = r.privileged ? "true_world" : "none";
   j["success"] = r.reached;
   j["explored"] = false;
   j["steps"] = r.steps;

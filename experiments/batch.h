@@ -71,6 +71,8 @@ struct TrialRecord {
   double shortest = 0.0;    // a navigation trial: the true world's shortest way (0: not recorded)
   double wall_time_s = 0.0;
   std::string end_reason;
+  std::string sensors;      // what the agents sensed with ("" in records written before it was recorded)
+  bool privileged = false;  // a navigation trial's planner was given the true world (oracle, known)
 };
 
 // All records of the batch results files in 'dirs' (one per trial key, the last one written).  Lines that

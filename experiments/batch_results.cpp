@@ -49,6 +49,8 @@ std::optional<TrialRecord> ParseRecord(const std::string& line, std::string* why
     r.shortest = j.value("shortest", 0.0);
     r.wall_time_s = j.at("wall_time_s").get<double>();
     r.end_reason = j.at("end_reason").get<std::string>();
+    r.sensors = j.value("sensors", "");
+    r.privileged = j.value("privileged", "none") != "none";
     return r;
   } catch (const json::exception& e) {
     *why = line.empty() || line.back() != '}' ? "a partial line (a run killed while writing it?)" : e.what();

@@ -20,56 +20,6 @@ namespace toponav::experiments {
 
 using internal::YamlSection;
 
-const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
-  using O = SearchOptions;
-  static const core::OptionFields<O> fields{
-      {"stuck_steps", &O::stuck_steps, 1, 1000},
-      {"unreachable_steps", &O::unreachable_steps, 1, 100000},
-      {"success_iou", &O::success_iou, 0.0, 1.0},
-      {"switch_ratio", &O::switch_ratio, 1.0, 100.0},
-      {"switch_margin", &O::switch_margin, 0.0, 10000.0},
-      {"give_up_distance", &O::give_up_distance, 0.01, 1000.0},
-      {"give_up_steps", &O::give_up_steps, 1, 100000},
-      {"push_distance", &O::push_distance, 0.0, 1000.0},
-      {"give_up_reach", &O::give_up_reach, 0.0, 1000.0},
-      {"give_up_probe_radius", &O::give_up_probe_radius, 0.0, 100000.0},
-      {"tour", &O::tour},
-      {"block_when_stuck", &O::block_when_stuck},
-      {"close_buildings", &O::close_buildings},
-      {"inspect_bend", &O::inspect_bend, 0.0, 1.5},
-      {"inspect_standoff", &O::inspect_standoff, 0.1, 1000.0},
-      {"inspect_unwalled", &O::inspect_unwalled, 0, 1000000},
-      {"dropped_wall_steps", &O::dropped_wall_steps, 0, 100000},
-      {"sealed_reach", &O::sealed_reach, 0.0, 1000.0},
-  };
-  return fields;
-}
-
-void SearchOptions::Validate() const {
-  core::CheckRanges(*this, Fields(), "search.");
-  if (exploration_estimate != "none" && exploration_estimate != "learned" && exploration_estimate != "oracle")
-    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate,
-                            "expected none, learned or oracle");
-  if (exploration_estimate != "none" && !tour)
-    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate,
-                            "only the tour uses it: set search.tour");
-}
-
-const core::OptionFields<NavigationOptions>& NavigationOptions::Fields() {
-  using O = NavigationOptions;
-  static const core::OptionFields<O> fields{
-      {"goal_radius", &O::goal_radius, 0.01, 1000.0},
-      {"stuck_window", &O::stuck_window, 2, 100000},
-      {"stuck_span", &O::stuck_span, 0.0, 1000.0},
-      {"cut_off_steps", &O::cut_off_steps, 1, 100000},
-      {"inspect_reach", &O::inspect_reach, 0.1, 1000.0},
-      {"doorway_min_width", &O::doorway_min_width, 0.1, 1000.0},
-      {"doorway_max_width", &O::doorway_max_width, 0.1, 1000.0},
-      {"scan_when_held", &O::scan_when_held, 0, 100000},
-  };
-  return fields;
-}
-
 const core::OptionFields<OpenWorldOptions>& OpenWorldOptions::Fields() {
   using O = OpenWorldOptions;
   static const core::OptionFields<O> fields{
@@ -107,13 +57,6 @@ sim::MotionOptions MotionFor(const Config& config, const core::World& world) {
   return m;
 }
 
-std::optional<planning::MotionBlocks> MotionBlocksFor(const Config& config, const core::World& world,
-                                                      int num_agents) {
-  if (!config.search.block_when_stuck) return std::nullopt;
-  const double step = MotionFor(config, world).step_length;
-  return planning::MotionBlocks(num_agents, config.search.stuck_steps, step, 2 * step, config.planning.clearance + 0.5);
-}
-
 SensorConfig SensorFor(const Config& config, const core::World& world) {
   SensorConfig s = config.sensor;
   if (world.has_boundary()) return s;
@@ -146,6 +89,9 @@ void ValidateAcrossSections(const Config& c) {
     throw core::ConfigError(c.source, "navigation.scan_when_held", std::to_string(held),
                             "must be 0 (off) or below navigation.stuck_window (" +
                                 std::to_string(c.navigation.stuck_window) + "): a held agent scans before it is stuck");
+  if (held > 0 && !c.sensor.range_ring.enabled())
+    throw core::ConfigError(c.source, "navigation.scan_when_held", std::to_string(held),
+                            "needs a range ring's scans: declare sensor.range_ring (rays, range)");
   if (c.bench.first_seed > core::kMaxSeed - uint64_t(c.bench.num_seeds))
     throw core::ConfigError(c.source, "bench.first_seed", std::to_string(c.bench.first_seed),
                             "first_seed + num_seeds must stay within [0, " + std::to_string(core::kMaxSeed) + "]");
@@ -183,7 +129,7 @@ void Validate(const Config& c) {
   InSection(c, "", [&] { c.search.Validate(); });
   InSection(c, "", [&] { c.render.Validate(); });
   InSection(c, "", [&] { c.motion.Validate(); });
-  InSection(c, "", [&] { core::CheckRanges(c.navigation, NavigationOptions::Fields(), "navigation."); });
+  InSection(c, "", [&] { core::CheckRanges(c.navigation, planning::NavigationOptions::Fields(), "navigation."); });
   InSection(c, "", [&] { c.lsp.Validate(); });
   InSection(c, "", [&] { core::CheckRanges(c.open_world, OpenWorldOptions::Fields(), "open_world."); });
   InSection(c, "", [&] { core::CheckRanges(c.picture, PictureOptions::Fields(), "picture."); });
@@ -226,12 +172,13 @@ void ReadSensor(YamlSection s, SensorConfig* sensor) {
     s.Read("images", &sensor->images);
     s.Read("poses", &sensor->poses);
   }
+  if (s.Has("range_ring")) ReadSection(s.Section("range_ring"), &sensor->range_ring);
   s.Finish();  // keys of another kind are unknown here
 }
 
-void ReadSearch(YamlSection s, SearchOptions* search) {
+void ReadSearch(YamlSection s, planning::SearchOptions* search) {
   s.Read("exploration_estimate", &search->exploration_estimate);
-  s.ReadFields(search, SearchOptions::Fields());
+  s.ReadFields(search, planning::SearchOptions::Fields());
   s.Finish();
 }
 

@@ -14,8 +14,8 @@
 #include "learning/train_options.h"
 #include "mapping/mapping.h"
 #include "planning/lsp_planner.h"
-#include "planning/motion_blocks.h"
 #include "planning/navigation.h"
+#include "planning/navigator_options.h"
 #include "sim/motion.h"
 #include "sim/render.h"
 #include "sim/worlds.h"
@@ -55,77 +55,6 @@ struct BenchOptions {
   static const core::OptionFields<BenchOptions>& Fields();  // the numeric and boolean keys (under bench:)
 };
 
-// How agents search in a trial (the trial loop's policy): YAML section `search:`.
-struct SearchOptions {
-  int stuck_steps = 6;            // an agent that moved less than a tenth of a step this many steps is nudged
-  int unreachable_steps = 12;     // frontiers left but none reachable this many steps in a row: explored
-  double success_iou = 0.95;      // success: explored and IoU above this (the paper's criterion)
-  double switch_ratio = 1.5;      // an agent keeps its frontier unless a new one is cheaper than cost/ratio ...
-  double switch_margin = 10.0;    // ... and by more than this
-  double give_up_distance = 4.0;  // an agent this close to its frontier target ...
-  int give_up_steps = 20;         // ... for this many steps without the frontier going away gives it up
-                                  // (after half of them its target is pushed push_distance into unknown
-                                  // space); a step in which an agent heading for it is stuck counts as well
-  double push_distance = 6.0;
-  double give_up_reach = 3.0;     // a new frontier lying this close to a given-up one (middle and ends) is
-                                  // given up (the map re-creates the same unmapped wall piece under a new
-                                  // id), and goal-directed trials put a frontier's target no closer than
-                                  // this to where agents were stuck at it; 0: off
-  double give_up_probe_radius = 20.0;  // ... counting the part of a given-up one within this of where agents
-                                       // stood (0: all of it)
-  bool tour = false;              // one agent heads for the first frontier of the shortest tour through all
-                                  // of them (false: the nearest frontier, the paper's); teams are assigned
-  bool block_when_stuck = false;  // where an agent makes no headway along its path for stuck_steps steps, a
-                                  // wall 4 steps long across its way is added for the planners (searches and
-                                  // goal-directed trials; in the latter also where a nudge finds no frontier
-                                  // near to give up)
-  bool close_buildings = false;   // open worlds: a straight frontier between two map vertices that walls
-                                  // already join the long way round is a building's last side, no target
-  double inspect_bend = 0.0;      // > 0: before the search ends, agents look from inspect_standoff at each map
-                                  // vertex whose two walls run on within this bend (radians) of straight
-                                  // (planning::StraightVertices: a jamb of a walled-over opening); 0: off
-  double inspect_standoff = 10.0; // world units from such a vertex, square to its walls, on the known side
-  int inspect_unwalled = 0;       // > 0, open worlds: before the search ends, agents also look from
-                                  // planning.frontier_setback at each map vertex no map wall reaches, each
-                                  // one a single wall reaches with known space all round it, and each
-                                  // rejected vertex with at least this many detections off every map wall
-                                  // (planning::UnwalledVertices: a hollow building's corners); 0: off
-  int dropped_wall_steps = 0;     // > 0: a frontier lying along a wall the map held for this many steps and
-                                  // has left out since (planning::DroppedWalls: 80 % of it within 1.5 units)
-                                  // is taken for that wall, no target; 0: off
-  double sealed_reach = 0.0;      // > 0, closed worlds: a search whose known space stops further than this
-                                  // (world units) short of a side of the world's bounds is not over: agents
-                                  // look for the map wall that seals the rest off (planning::UnreachedSide,
-                                  // planning::SuspectInspector) while there are suspects left; 0: off
-  // What the tour (search.tour, one agent) knows of the space past each frontier
-  // (planning/frontier_exploration.h): "none" (every frontier alike), "learned" (the exploration cost a
-  // subgoal network -- sensor.subgoal_model, or the sensor's model itself, trained with train.subgoal on
-  // searches -- gives the cells each frontier covers, averaged over the views that saw them) or "oracle"
-  // (the true world's: an upper bound for an estimate, since it looks at the world)
-  std::string exploration_estimate = "none";
-  static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
-  void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
-};
-
-// When a goal-directed navigation trial ends (experiments/navigation_trial.h), YAML section `navigation:`.
-struct NavigationOptions {
-  double goal_radius = 5.4;   // reached: the agent within this of the goal (the reference's 3 steps of 1.8)
-  int stuck_window = 100;     // stuck: after this many steps, every position of the last this many ...
-  double stuck_span = 9.0;    // ... lies within this of each other (the reference: 100 poses, 5 steps)
-  int cut_off_steps = 12;     // the map leaves no way to the goal, nothing to explore and no rejected vertex to
-                              // look at (planning::SuspectInspector) this many steps in a row
-  double inspect_reach = 8.0;  // a suspected false wall counts as looked at once the agent came this close (units)
-  // Doorway hypotheses (planning/doorways.h): openings between this wide and this wide (units)
-  double doorway_min_width = 8.0;
-  double doorway_max_width = 24.0;
-  // > 0: once the agent's last this many positions lie within stuck_span of each other (held, as stuck_window
-  // counts), it plans with what its own range sensing shows round it besides the map, every step from then
-  // on: the walls of every scan since, merged (the motion's avoid_window in range; planning/scan_walls.h).
-  // Below stuck_window, so a held agent gets this before the trial would end "stuck"; 0: off
-  int scan_when_held = 0;
-  static const core::OptionFields<NavigationOptions>& Fields();
-};
-
 // What differs in open worlds (the office park), YAML section `open_world:`: agents take the longer outdoor
 // step (the reference's outdoor motion primitive), MCMC runs more often at the same proposals per step
 // (a call proposes mapping.mcmc_samples * mcmc_every / bench.mcmc_every, at least 1), and the learned sensor
@@ -155,8 +84,8 @@ struct Config {
   SensorConfig sensor;
   mapping::MapperOptions mapping;
   planning::PlannerOptions planning;
-  SearchOptions search;
-  NavigationOptions navigation;
+  planning::SearchOptions search;
+  planning::NavigationOptions navigation;
   planning::LspOptions lsp;
   OpenWorldOptions open_world;
   DatagenOptions datagen;
@@ -169,9 +98,6 @@ struct Config {
 
 // The motion options agents use in 'world' (open worlds take open_world.step_length): derived once, here.
 sim::MotionOptions MotionFor(const Config& config, const core::World& world);
-// The motion blocks for 'num_agents' agents in 'world' (planning::MotionBlocks: a short wall across an agent's way
-// where it makes no headway for search.stuck_steps steps); none unless search.block_when_stuck.
-std::optional<planning::MotionBlocks> MotionBlocksFor(const Config& config, const core::World& world, int num_agents);
 // The sensor that observes 'world' (open worlds take open_world.sub_bin and sigma_bearing): derived once, here.
 SensorConfig SensorFor(const Config& config, const core::World& world);
 

@@ -26,19 +26,19 @@ namespace {
 
 // Follows a fixed path: waypoints within half a step of the agent are reached, one it cannot get to (clutter
 // in the way) is skipped; the run ends when the path's end is reached.
-class FollowPath : public AgentPolicy {
+class FollowPath : public planning::Navigator {
  public:
   explicit FollowPath(std::vector<core::Vec2> path) : path_(std::move(path)) {}
-  bool Plan(const LoopState& state, std::vector<std::vector<core::Vec2>>* paths) override {
+  bool Plan(const planning::NavigatorInput& input, std::vector<std::vector<core::Vec2>>* paths) override {
     if (next_ >= path_.size()) return false;
     (*paths)[0].assign(path_.begin() + long(next_), path_.end());
     return true;
   }
-  sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& s, sim::MotionSim& motion,
-                            core::Rng& rng) override {
-    while (next_ < path_.size() && core::Distance(s.pose.position(), path_[next_]) < 0.5 * state.step_length) ++next_;
+  std::optional<core::Vec2> AfterStep(const planning::NavigatorInput& input, int agent,
+                                      const planning::MotionOutcome& s, core::Rng& rng) override {
+    while (next_ < path_.size() && core::Distance(s.pose.position(), path_[next_]) < 0.5 * input.step_length) ++next_;
     if (s.blocked) ++next_;
-    return s;
+    return std::nullopt;
   }
 
  private:

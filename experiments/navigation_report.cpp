@@ -51,6 +51,14 @@ void SetReduction(const std::vector<TrialRecord>& records, NavigationReportRow* 
   }
 }
 
+// Adds what trial 'r' had to go on to its row's inputs, once.
+void AddInputs(const TrialRecord& r, NavigationReportRow* row) {
+  if (!r.ok) return;
+  const std::string inputs = (r.sensors.empty() ? "?" : r.sensors) + (r.privileged ? " + true world" : "");
+  if (row->inputs.empty()) row->inputs = inputs;
+  else if (("; " + row->inputs + "; ").find("; " + inputs + "; ") == std::string::npos) row->inputs += "; " + inputs;
+}
+
 }  // namespace
 
 std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialRecord>& records) {
@@ -61,6 +69,7 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
     NavigationReportRow& row = rows[RowKey(r)];
     row.kind = r.id.kind;
     row.planner = r.id.planner;
+    AddInputs(r, &row);
     ++row.trials;
     if (!r.ok) {
       ++row.failed;
@@ -96,18 +105,18 @@ std::vector<NavigationReportRow> SummarizeNavigation(const std::vector<TrialReco
 std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, const std::vector<TrialRecord>& records) {
   std::ostringstream os;
   os << "| environment | planner | reached goal | mean cost | total cost | reduction vs optimistic | median cost ratio "
-        "| cost / shortest | mean steps | mean IoU | failed runs | s/trial |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| cost / shortest | mean steps | mean IoU | failed runs | s/trial | inputs |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
     char reduction[64] = "-", ratio[32] = "-", detour[32] = "-";
     if (!std::isnan(r.reduction))
       std::snprintf(reduction, sizeof reduction, "%.1f %% (%d seeds)", 100 * r.reduction, r.paired);
     if (!std::isnan(r.median_ratio)) std::snprintf(ratio, sizeof ratio, "%.3f", r.median_ratio);
     if (!std::isnan(r.over_shortest)) std::snprintf(detour, sizeof detour, "%.3f", r.over_shortest);
-    char buf[400];
-    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %s | %.1f | %.4f | %d | %.1f |\n",
+    char buf[640];
+    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %s | %.1f | %.4f | %d | %.1f | %s |\n",
                   core::ToString(r.kind), r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction,
-                  ratio, detour, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s);
+                  ratio, detour, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s, r.inputs.c_str());
     os << buf;
   }
   std::vector<std::string> short_of_goal;
@@ -126,11 +135,12 @@ std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, con
 std::string NavigationCsv(const std::vector<NavigationReportRow>& rows) {
   std::ostringstream os;
   os << "environment,planner,trials,reached,failed,mean_cost,total_cost,reduction,paired,median_ratio,over_shortest,"
-        "mean_steps,mean_iou,mean_wall_s\n";
+        "mean_steps,mean_iou,mean_wall_s,inputs\n";
   for (const auto& r : rows)
     os << core::ToString(r.kind) << "," << r.planner << "," << r.trials << "," << r.reached << "," << r.failed << ","
        << r.mean_cost << "," << r.total_cost << "," << r.reduction << "," << r.paired << "," << r.median_ratio << ","
-       << r.over_shortest << "," << r.mean_steps << "," << r.mean_iou << "," << r.mean_wall_s << "\n";
+       << r.over_shortest << "," << r.mean_steps << "," << r.mean_iou << "," << r.mean_wall_s << ",\"" << r.inputs
+       << "\"\n";
   return os.str();
 }
 

@@ -23,6 +23,9 @@ struct NavigationReportRow {
   // Over the trials that reached the goal: total cost / total true shortest way (1: no detour; NaN where the
   // records have no shortest way).
   double over_shortest = 0.0;
+  // What the planner had to go on: the sensors its trials name, and "+ true world" where it was given the true
+  // world ("?" for records that do not say).
+  std::string inputs;
 };
 
 // Rows for the records that name a planner, by kind then planner (optimistic first).

@@ -1,9 +1,9 @@
 #pragma once
-// One goal-directed navigation trial (paper Sec. V): one agent from the world's start to its goal on the
-// shared agent loop, every step a goal-directed planner (the optimistic baseline, Learned Subgoal Planning)
-// choosing the way on the map built so far (planner "known": on the true walls).  The trial ends when the
-// agent is within navigation.goal_radius of the goal, is stuck, finds the goal cut off, or reaches the step
-// cap; its cost is the distance travelled.  A trial is a pure function of (world, config, planner, seed).
+// One goal-directed navigation trial (paper Sec. V): the goal navigator (planning/goal_navigator.h) takes one
+// agent from the world's start to its goal on the shared agent loop.  The trial ends when the navigator says so
+// (goal, stuck, cut off) or at the step cap; its cost is the distance travelled.  The oracle and "known"
+// planners get the true world as their declared privileged input, and the record says so.  A trial is a pure
+// function of (world, config, planner, seed).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -13,30 +13,20 @@
 #include "core/world.h"
 #include "experiments/agent_loop.h"
 #include "experiments/config.h"
+#include "planning/goal_navigator.h"
 #include "planning/lsp_planner.h"
 #include "planning/planner.h"
 
 namespace toponav::experiments {
 
-// The goal-directed planners a trial (a bench row's `planner:`) may name: "optimistic" (the baseline: unknown
-// space is free), "oracle" (LSP with the true frontier properties: the bound a perfect network reaches),
-// "lsp" (LSP with the sensor's per-cell subgoal estimates averaged per frontier, planning::CellAveragingEstimator;
-// with a sensor that gives none every frontier keeps the optimistic default), "known" (the optimistic planner on
-// the true world's walls instead of the map: what a planner that knew the maze travels with the same motion and
-// path rules, the floor every other planner's cost is measured against).
-enum class GoalPlanner { kOptimistic, kOracle, kLsp, kKnown };
+using planning::GoalPlanner;
+using planning::NavigationDecision;
+using planning::ParseGoalPlanner;
 
-// What the planner decided at a step, before the agent moves.
-struct NavigationDecision {
-  // The frontier pieces a learned-subgoal planner estimated, with their Ps (empty for the optimistic planner,
-  // or when it planned optimistically).
-  std::vector<planning::FrontierEstimate> estimates;
-  // The way the agent follows this step (the planner's, or the recovery's), from where it stands to its end
-  // (world units); empty where it has none and stays.
-  std::vector<core::Vec2> way;
-};
-const char* ToString(GoalPlanner planner);
-std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name);
+// Each learned estimate's frontier pieces that some observation covered: the estimates beside their true
+// properties.
+using SubgoalTruthHook = std::function<void(const std::vector<planning::SubgoalProperties>& estimates,
+                                            const std::vector<planning::SubgoalProperties>& truth)>;
 
 struct NavigationTrialOptions {
   GoalPlanner planner = GoalPlanner::kOptimistic;
@@ -47,19 +37,20 @@ struct NavigationTrialOptions {
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
   // Called every step before the planner with the loop's state and the frontier targets on offer (training
   // data: the frontiers to label).
-  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&)> on_plan;
+  std::function<void(const planning::NavigatorInput&, const std::vector<planning::FrontierTarget>&)> on_plan;
   // Called every step that does not end the trial, before the agent moves, with what the planner decided.
   std::function<void(const NavigationDecision&)> on_decision;
   // Planner "lsp": called at every estimate with each frontier piece the network's outputs covered, its
-  // estimate (calibrated as lsp.calibration says) beside its true properties (what the oracle would get).
-  std::function<void(const std::vector<planning::SubgoalProperties>& estimates,
-                     const std::vector<planning::SubgoalProperties>& truth)>
-      on_subgoal_truth;
+  // estimate (calibrated as lsp.calibration says) beside its true properties (what the oracle would get: the
+  // harness's scoring, not the navigator's).
+  SubgoalTruthHook on_subgoal_truth;
 };
 
 struct NavigationResult {
   uint64_t seed = 0;
   std::string planner;
+  std::string sensors;            // what the agent sensed with (SensorsUsed: "learned", "learned+range_ring", ...)
+  bool privileged = false;        // the planner was given the true world (oracle, known)
   bool reached = false;           // within navigation.goal_radius of the goal
   int steps = 0;
   double distance = 0.0;          // travelled: the trial's cost
@@ -74,7 +65,7 @@ struct NavigationResult {
   int longest_hold = 0;
   int recovery_steps = 0;  // steps on which the planner found no way to the goal (so the recovery ran)
   int repeated_steps = 0;  // steps of a third or later lap of the same loop, with a path (planning::RepeatedStep)
-  int scan_steps = 0;      // steps planned with range scans, after a hold (navigation.scan_when_held)
+  int scan_steps = 0;      // steps planned with the range ring's scans, after a hold (navigation.scan_when_held)
   std::vector<core::Segment2> scan_walls;  // the walls those scans showed, merged (planning::ScanWallSet)
   std::vector<core::Segment2> blocks;  // every motion block added (search.block_when_stuck), taken back or not
   double iou = 0.0;               // known space of the final map vs the true free space

@@ -47,7 +47,15 @@ const core::OptionFields<LearnedSensorOptions>& LearnedSensorOptions::Fields() {
   return fields;
 }
 
+std::string SensorsUsed(const SensorConfig& config) {
+  return std::string(ToString(config.kind)) + (config.range_ring.enabled() ? "+range_ring" : "");
+}
+
 void SensorConfig::Validate() const {
+  core::CheckRanges(range_ring, sim::RangeRingOptions::Fields(), "sensor.range_ring.");
+  if (kind == SensorKind::kRecorded && range_ring.enabled())
+    throw core::ConfigError("<options>", "sensor.range_ring.rays", std::to_string(range_ring.rays),
+                            "a recording has no range ring's scans (set 0)");
   if (kind == SensorKind::kNoisy) noisy.Validate();
   if (kind == SensorKind::kNoisy) return;
   core::CheckRanges(learned, LearnedSensorOptions::Fields(), "sensor.");
@@ -69,12 +77,7 @@ std::unique_ptr<core::VertexDetectorInterface> LearnedDetector(const LearnedSens
   return learning::CreateLearnedDetector(o.model, decode, o.subgoal_model, o.mirror_average);
 }
 
-}  // namespace
-
-std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& config, const SensorSetup& setup) {
-  config.Validate();
-  TOPONAV_CHECK(setup.world != nullptr || config.kind == SensorKind::kRecorded,
-                "a " << ToString(config.kind) << " sensor needs a world");
+std::unique_ptr<core::VertexSensorInterface> VertexSensor(const SensorConfig& config, const SensorSetup& setup) {
   switch (config.kind) {
     case SensorKind::kNoisy: return sim::CreateNoisyGroundTruthSensor(*setup.world, config.noisy, setup.seed);
     case SensorKind::kLearned:
@@ -84,6 +87,17 @@ std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& co
       return CreateRecordedSensor(ReadRecording(config.images, config.poses), LearnedDetector(config.learned));
   }
   core::ThrowInternal(__FILE__, __LINE__, "unhandled sensor kind");
+}
+
+}  // namespace
+
+std::unique_ptr<core::VertexSensorInterface> CreateSensor(const SensorConfig& config, const SensorSetup& setup) {
+  config.Validate();
+  TOPONAV_CHECK(setup.world != nullptr || config.kind == SensorKind::kRecorded,
+                "a " << ToString(config.kind) << " sensor needs a world");
+  std::unique_ptr<core::VertexSensorInterface> sensor = VertexSensor(config, setup);
+  if (!config.range_ring.enabled()) return sensor;
+  return sim::WithRangeRing(*setup.world, config.range_ring, std::move(sensor));
 }
 
 }  // namespace toponav::experiments

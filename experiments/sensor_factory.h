@@ -5,6 +5,7 @@
 //   learned: the vertex network of a model file (`model: PATH`) on the rendered panorama (LearnedSensorOptions);
 //   recorded: the same network on the panoramas of a recording (`images: DIR`, experiments/recorded.h), which
 //             answers only at the recorded poses and needs no world.
+// Beside any kind but recorded, `range_ring: {rays, range}` adds a range ring's scans (sim/range_ring.h).
 // Image-based kinds are detectors composed with the renderer (sim::CreateRenderingSensor); this is the only
 // file of the experiments layer that includes the learning layer.
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include "core/option_fields.h"
 #include "core/world.h"
 #include "sim/noisy_sensor.h"
+#include "sim/range_ring.h"
 #include "sim/render.h"
 
 namespace toponav::experiments {
@@ -48,8 +50,14 @@ struct SensorConfig {
   LearnedSensorOptions learned;   // kinds learned and recorded: likewise
   std::string images;             // kind recorded: the recording's folder ...
   std::string poses;              // ... and its poses file (default: images/poses.csv)
+  sim::RangeRingOptions range_ring;  // `range_ring: {rays, range}`: a short-range scan beside the vertex
+                                     // sensor (none by default; not for recordings)
   void Validate() const;          // throws core::ConfigError ("sensor.max_range", "sensor.model", ...)
 };
+
+// The sensors a config declares, as trial records and reports name them: the kind, then "+range_ring" where
+// one is declared (e.g. "learned+range_ring").
+std::string SensorsUsed(const SensorConfig& config);
 
 // What the sensor is for: the world it observes (and renders; none for a recording), the render options of image-based
 // kinds, the goal of goal-directed runs (passed to goal-conditioned detectors), and the seed of its randomness.

@@ -25,7 +25,7 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& world, const
   const planning::TrueFreeSpace truth(world, config.lsp.cell, config.lsp.clearance);
   const bool maze = world.kind == core::WorldKind::kGuidedMaze;
   std::vector<SubgoalSample> out;
-  const auto sample = [&](const LoopState& state, const std::vector<planning::FrontierTarget>& targets) {
+  const auto sample = [&](const planning::NavigatorInput& state, const std::vector<planning::FrontierTarget>& targets) {
     if (state.step % every != 0 || targets.empty()) return;
     const std::vector<const mapping::Frontier*> frontiers = planning::TargetFrontiers(*state.view, targets);
     const core::Pose2 pose = state.poses[0];
@@ -59,7 +59,7 @@ std::vector<SubgoalSample> CollectSubgoalSamples(const core::World& world, const
     o.max_steps = config.bench.max_steps;
     o.mcmc_every = config.bench.mcmc_every;
     o.open_world_mcmc_every = config.open_world.mcmc_every;
-    o.on_plan = [&](const LoopState& state, const std::vector<planning::FrontierTarget>& targets,
+    o.on_plan = [&](const planning::NavigatorInput& state, const std::vector<planning::FrontierTarget>& targets,
                     const std::vector<planning::FrontierChoice>&) { sample(state, targets); };
     RunSearchTrial(world, config, o, seed);
   }

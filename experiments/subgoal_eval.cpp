@@ -46,13 +46,6 @@ void CountOrderedPairs(const std::vector<FrontierCost>& frontiers, double* agree
 
 namespace {
 
-int Channel(const core::CellGrid& cells, const std::string& name, const std::string& model) {
-  const int c = cells.Channel(name);
-  if (c < 0)
-    throw core::ConfigError("<sensor>", "sensor.model", model, "gives no '" + name + "' cells: not a subgoal model");
-  return c;
-}
-
 // Accumulates one sample's frontier cells.
 struct Tally {
   std::string model;
@@ -63,9 +56,9 @@ struct Tally {
   double truth_sum = 0, estimate_sum = 0, order_agree = 0;
   size_t order_pairs = 0;
 
-  void Add(const core::CellGrid& out, const core::SubgoalLabelGrid& truth) {
-    const int cp = Channel(out, "ps", model), cs = Channel(out, "delta_success", model);
-    const int ce = Channel(out, "exploration", model);
+  void Add(const core::SubgoalCells& out, const core::SubgoalLabelGrid& truth) {
+    if (out.empty())
+      throw core::ConfigError("<sensor>", "sensor.model", model, "gives no subgoal cells: not a subgoal model");
     TOPONAV_CHECK(
         out.rows == truth.grid.rows && out.cols == truth.grid.cols,
         "network grid " << out.rows << "x" << out.cols << " vs labels " << truth.grid.rows << "x" << truth.grid.cols);
@@ -73,7 +66,7 @@ struct Tally {
     for (size_t i = 0; i < truth.mask.size(); ++i) {
       if (!truth.mask[i]) continue;
       const int r = int(i) / out.cols, c = int(i) % out.cols;
-      const double p = std::clamp(double(out.at(r, c, cp)), 1e-6, 1.0 - 1e-6);
+      const double p = std::clamp(double(out.at(r, c).ps), 1e-6, 1.0 - 1e-6);
       const bool y = truth.ps[i] > 0.5;
       const double range = truth.grid.RowRange(r);
       ps.push_back(float(p));
@@ -82,10 +75,10 @@ struct Tally {
       cross_entropy -= y ? std::log(p) : std::log(1.0 - p);
       (y ? ps_pos : ps_neg) += p;
       if (y) {
-        success += std::abs(out.at(r, c, cs) - truth.delta_success[i]);
+        success += std::abs(out.at(r, c).delta_success - truth.delta_success[i]);
         continue;
       }
-      const double estimate = out.at(r, c, ce);
+      const double estimate = out.at(r, c).exploration;
       exploration += std::abs(estimate - truth.exploration[i]);
       truth_sum += truth.exploration[i], estimate_sum += estimate;
       auto& [sum, n] = frontiers[truth.exploration[i]];
@@ -144,7 +137,7 @@ SubgoalEval EvaluateSubgoalEstimates(const Config& config, const LearnedSensorOp
     setup.goal_at_agent = !maze;  // a search's samples: the goal where the agent stands
     const auto sensor = CreateSensor(learned, setup);
     for (const SubgoalSample& s : CollectSubgoalSamples(world, config, seed, options.every, core::kSubgoalGrid)) {
-      tally.Add(sensor->Observe(s.pose, 0).cells, s.labels);
+      tally.Add(sensor->Observe(s.pose, 0).subgoal, s.labels);
       ++examples;
     }
     if (progress) progress(int(k + 1), int(options.seeds.size()));

@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "experiments/agent_loop.h"
 #include "experiments/map_drive.h"
-#include "experiments/search_policy.h"
+#include "planning/search_navigator.h"
 #include "mapping/polygon_set.h"
 
 namespace toponav::experiments {
@@ -46,36 +46,57 @@ BuildingPlacementBreakdown BreakDownBuildingPlacement(const core::World& world, 
   return out;
 }
 
+namespace {
+
+// The search navigator's setup from the config: the true world only for search.exploration_estimate oracle.
+planning::SearchNavigatorSetup SearchSetup(const core::World& world, const Config& config, int num_agents) {
+  planning::SearchNavigatorSetup s;
+  s.num_agents = num_agents;
+  s.bounds = world.bounds;
+  s.closed = world.has_boundary();
+  s.step_length = MotionFor(config, world).step_length;
+  s.search = config.search;
+  s.navigation = config.navigation;
+  s.planning = config.planning;
+  s.lsp = config.lsp;
+  s.model = config.sensor.learned.model;
+  if (config.search.exploration_estimate == "oracle") s.truth = &world;
+  return s;
+}
+
+}  // namespace
+
 TrialResult RunSearchTrial(const core::World& world, const Config& config, const TrialOptions& o, uint64_t seed,
                            mapping::MapView* final_view) {
   const auto t0 = std::chrono::steady_clock::now();
   TOPONAV_CHECK(o.num_agents >= 1, "num_agents " << o.num_agents);
   const bool open_world = !world.has_boundary();
-  SearchPolicy policy(world, config, o.num_agents);
-  policy.on_plan = o.on_plan;
+  planning::SearchNavigator navigator(SearchSetup(world, config, o.num_agents));
+  navigator.on_plan = o.on_plan;
   LoopOptions lo;
   lo.num_agents = o.num_agents;
   lo.max_steps = o.max_steps;
   lo.on_step = o.on_step;
-  lo.goal_at_agent = policy.wants_goal_at_agent();
+  lo.goal_at_agent = navigator.wants_goal_at_agent();
   // MCMC cadence; open worlds spread the same proposals per step over more frequent calls.
   lo.mcmc_every = o.mcmc_every > 0 && open_world ? o.open_world_mcmc_every : o.mcmc_every;
   if (o.mcmc_every > 0)
     lo.mcmc_samples = std::max(1, int(std::lround(double(config.mapping.mcmc_samples) * lo.mcmc_every / o.mcmc_every)));
-  const LoopResult loop = RunAgentLoop(world, config, lo, policy, seed);
+  const LoopResult loop = RunAgentLoop(world, config, lo, navigator, seed);
   TrialResult r;
   r.seed = seed;
   r.num_agents = o.num_agents;
   r.steps = loop.steps;
   r.distance = loop.distance;
   r.paths = loop.paths;
-  r.explored = policy.explored();
-  r.end_reason = policy.end_reason();
-  r.nudges = policy.nudges();
-  r.give_ups = policy.give_ups();
-  r.inspections = policy.inspections();
-  r.sealed_steps = policy.sealed_steps();
-  r.blocks = policy.blocks();
+  r.sensors = SensorsUsed(config.sensor);
+  r.explored = navigator.explored();
+  r.end_reason = navigator.end_reason();
+  r.nudges = navigator.nudges();
+  r.give_ups = navigator.give_ups();
+  r.inspections = navigator.inspections();
+  r.sealed_steps = navigator.sealed_steps();
+  r.blocks = navigator.blocks();
   r.iou = SearchIoU(world, loop.final_view);
   r.success = r.explored && r.iou > config.search.success_iou;
   r.time_map_s = loop.observe_s;

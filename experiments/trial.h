@@ -1,5 +1,5 @@
 #pragma once
-// One search trial (paper Sec. IV): the search policy (experiments/search_policy.h) on the agent loop
+// One search trial (paper Sec. IV): the search navigator (planning/search_navigator.h) on the agent loop
 // (experiments/agent_loop.h), scored by the final map.  A trial is a pure function of its spec.
 #include <cstdint>
 #include <functional>
@@ -25,8 +25,8 @@ struct TrialOptions {
   // Called after every step with the map the planners used and the agents' paths so far, and once more
   // with the final map the metrics score (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;
-  // SearchPolicy::on_plan: every step before agents move (traces, training data).
-  std::function<void(const LoopState&, const std::vector<planning::FrontierTarget>&,
+  // SearchNavigator::on_plan: every step before agents move (traces, training data).
+  std::function<void(const planning::NavigatorInput&, const std::vector<planning::FrontierTarget>&,
                      const std::vector<planning::FrontierChoice>&)>
       on_plan;
 };
@@ -34,6 +34,7 @@ struct TrialOptions {
 struct TrialResult {
   uint64_t seed = 0;
   int num_agents = 0;
+  std::string sensors;            // what the agents sensed with (SensorsUsed: "noisy", "learned", ...)
   bool explored = false;          // no reachable frontier left (none at all, or none reachable for a while)
   bool success = false;
   int steps = 0;

@@ -11,20 +11,14 @@ namespace toponav::learning {
 
 namespace {
 
-// The subgoal outputs as the observation's cell grid (channels "ps" a probability, "delta_success",
-// "exploration").
-core::CellGrid SubgoalCells(const SubgoalOutput& s) {
-  core::CellGrid c;
+// The subgoal outputs as the observation's typed cells.
+core::SubgoalCells SubgoalCells(const SubgoalOutput& s) {
+  core::SubgoalCells c;
   c.rows = s.grid.rows;
   c.cols = s.grid.cols;
   c.max_range = s.grid.max_range;
-  c.channels = {"ps", "delta_success", "exploration"};
-  c.values.resize(s.ps.size() * 3);
-  for (size_t i = 0; i < s.ps.size(); ++i) {
-    c.values[3 * i] = s.ps[i];
-    c.values[3 * i + 1] = s.delta_success[i];
-    c.values[3 * i + 2] = s.exploration[i];
-  }
+  c.values.resize(s.ps.size());
+  for (size_t i = 0; i < s.ps.size(); ++i) c.values[i] = {s.ps[i], s.delta_success[i], s.exploration[i]};
   return c;
 }
 
@@ -43,14 +37,14 @@ class LearnedDetector : public core::VertexDetectorInterface {
     if (own_cells) {
       auto [out, cells] = PredictWithGoal(model_, image, mirrored, *context.goal);
       z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
-      z.cells = SubgoalCells(cells);
+      z.subgoal = SubgoalCells(cells);
       return z;
     }
     GridOutput out = model_.Predict(image);
     if (mirrored) out = Mean(out, MirroredBack(model_.Predict(*mirrored)));
     z.detections = DecodeDetections(out.vertex, out.labels, out.grid, decode_);
     if (subgoal_ && context.goal)
-      z.cells = SubgoalCells(PredictWithGoal(*subgoal_, image, mirrored, *context.goal).second);
+      z.subgoal = SubgoalCells(PredictWithGoal(*subgoal_, image, mirrored, *context.goal).second);
     return z;
   }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <unordered_set>
 
 #include "core/error.h"
@@ -15,12 +14,6 @@ using core::Vec2;
 
 namespace {
 
-int Channel(const core::CellGrid& g, const std::string& name) {
-  const int c = g.Channel(name);
-  if (c < 0) throw core::DataError("<observation>", "its cell grid has no channel '" + name + "'");
-  return c;
-}
-
 // The world cell (of side 'cell') holding p, as one key.
 uint64_t PlaceKey(const Vec2& p, double cell) {
   const auto x = int64_t(std::floor(p.x / cell)), y = int64_t(std::floor(p.y / cell));
@@ -30,12 +23,11 @@ uint64_t PlaceKey(const Vec2& p, double cell) {
 }  // namespace
 
 void CellAveragingEstimator::Observe(const core::Observation& z) {
-  if (z.cells.empty()) return;
-  const core::CellGrid& g = z.cells;
-  if (g.rows <= 0 || g.cols <= 0 || !(g.max_range > 0) ||
-      g.values.size() != size_t(g.rows) * size_t(g.cols) * g.channels.size())
-    throw core::DataError("<observation>", "its cell grid's size does not match its rows, columns and channels");
-  pending_.push_back({z.pose, g, Channel(g, "ps"), Channel(g, "delta_success"), Channel(g, "exploration")});
+  if (z.subgoal.empty()) return;
+  const core::SubgoalCells& g = z.subgoal;
+  if (g.rows <= 0 || g.cols <= 0 || !(g.max_range > 0) || g.values.size() != size_t(g.rows) * size_t(g.cols))
+    throw core::DataError("<observation>", "its subgoal cells' count does not match its rows and columns");
+  pending_.push_back({z.pose, g});
   while (int(pending_.size()) > max_pending_) pending_.pop_front();
   ++observed_;
 }
@@ -53,9 +45,10 @@ void CellAveragingEstimator::Accumulate(const Seen& s, const SubgoalGrid& grid) 
       const int row = rb.RangeRow(range);
       const int col = rb.BearingCol(core::WrapAngle(std::atan2(p.y - s.pose.y, p.x - s.pose.x) - s.pose.yaw));
       Sum& sum = sums_[key];
-      sum.ps += s.cells.at(row, col, s.ps);
-      sum.delta_success += s.cells.at(row, col, s.delta_success);
-      sum.exploration += s.cells.at(row, col, s.exploration);
+      const core::SubgoalCell& cell = s.cells.at(row, col);
+      sum.ps += cell.ps;
+      sum.delta_success += cell.delta_success;
+      sum.exploration += cell.exploration;
       ++sum.count;
     }
 }

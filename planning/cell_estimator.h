@@ -1,6 +1,6 @@
 #pragma once
 // The learned estimator of Learned Subgoal Planning (paper Sec. V): a network's per-cell subgoal outputs on
-// its range-bearing grid (core::Observation::cells, channels "ps", "delta_success", "exploration"), averaged
+// its range-bearing grid (core::Observation::subgoal), averaged
 // for each frontier over the cells it covers and over every observation that saw them -- the paper
 // averages; the reference estimated once, from the first image (lsp.md §3.4).  The sums are kept per place
 // (world cell), so an estimate settles as observations accumulate, whatever ids the map gives its frontiers
@@ -25,8 +25,8 @@ class CellAveragingEstimator : public SubgoalEstimator {
   // 'pending': at most this many observations wait for the next estimate (the latest ones).
   explicit CellAveragingEstimator(int pending = 10, SubgoalCalibration calibration = {})
       : max_pending_(pending), calibration_(std::move(calibration)) {}
-  // Queues the observation if it carries the three channels.  Throws core::DataError for a grid whose
-  // channels lack one of them or whose size does not match.
+  // Queues the observation if it carries subgoal cells.  Throws core::DataError for cells whose count does not
+  // match their grid.
   void Observe(const core::Observation& z);
   // Adds the queued observations' outputs at the frontiers' cells to the running sums, then averages them.
   std::vector<SubgoalProperties> Estimate(const SubgoalGrid& grid, const OrderingProblem& distances) override;
@@ -37,8 +37,7 @@ class CellAveragingEstimator : public SubgoalEstimator {
  private:
   struct Seen {
     core::Pose2 pose;
-    core::CellGrid cells;
-    int ps = 0, delta_success = 0, exploration = 0;  // channel indices
+    core::SubgoalCells cells;
   };
   struct Sum {
     double ps = 0, delta_success = 0, exploration = 0;

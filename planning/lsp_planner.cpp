@@ -48,83 +48,66 @@ mapping::MapView MaskOtherPieces(const mapping::MapView& view, const std::vector
   return v;
 }
 
-class LspPlanner : public Planner {
- public:
-  LspPlanner(std::unique_ptr<SubgoalEstimator> estimator, const LspOptions& o, const PlannerOptions& planning,
-             std::optional<core::Aabb2> region, std::string name)
-      : estimator_(std::move(estimator)), o_(o), planning_(planning), region_(region), name_(std::move(name)) {
-    o.Validate();  // the ranges of max_frontiers, cell and piece_length
-    TOPONAV_CHECK(estimator_, "an LSP planner without an estimator");
-  }
-
-  std::vector<FrontierChoice> Plan(const PlanningProblem& p) override {
-    TOPONAV_CHECK(p.view && p.graph && p.targets && p.goal && p.agents.size() == 1,
-                  "LSP plans for one agent with a goal");
-    decision_ = {};
-    FrontierChoice c;
-    const int piece = ChooseSubgoal(p);
-    const int subgoal = piece >= 0 ? pieces_[size_t(piece)].id : -1;
-    if (subgoal >= 0) {
-      const mapping::MapView masked = MaskOtherPieces(*p.view, pieces_, size_t(piece));
-      c.path = VisibilityGraph(masked, planning_, false).Plan(p.agents[0], *p.goal);
-      if (!c.path)
-        for (const auto& t : *p.targets)
-          if (t.frontier_id == subgoal) c.path = p.graph->Plan(p.agents[0], t.point);
-      c.frontier_id = subgoal;
-    }
-    if (!c.path) {
-      c.path = p.graph->Plan(p.agents[0], *p.goal);  // the optimistic way
-      c.frontier_id = -1;
-    }
-    c.status = c.path.status;
-    return {c};
-  }
-
-  std::string name() const override { return name_; }
-  const LspDecision& decision() const { return decision_; }
-
- private:
-  // The piece (index into pieces_) that begins the best order, or -1 (the goal is known, or nothing to order).
-  int ChooseSubgoal(const PlanningProblem& p) {
-    pieces_.clear();
-    for (const mapping::Frontier& f : p.view->frontiers)
-      for (mapping::Frontier& piece : FrontierPieces(f, o_.piece_length)) pieces_.push_back(std::move(piece));
-    std::vector<const mapping::Frontier*> frontiers;
-    std::vector<int> index;
-    for (const mapping::Frontier* f : TargetFrontiers(*p.view, *p.targets))
-      for (size_t k = 0; k < pieces_.size(); ++k)
-        if (pieces_[k].id == f->id) {
-          frontiers.push_back(&pieces_[k]);
-          index.push_back(int(k));
-        }
-    if (frontiers.empty()) return -1;
-    const SubgoalGrid grid(*p.view, frontiers, p.agents[0], *p.goal, o_.cell, region_);
-    if (grid.goal_known()) return -1;
-    OrderingProblem problem = grid.Distances();
-    const std::vector<SubgoalProperties> estimates = estimator_->Estimate(grid, problem);
-    TOPONAV_CHECK(estimates.size() == frontiers.size(), estimates.size()
-                                                            << " estimates for " << frontiers.size() << " frontiers");
-    for (size_t f = 0; f < frontiers.size(); ++f) problem.properties[f] = Clamped(estimates[f]);
-    const std::vector<int> chosen = SelectFrontiers(problem, o_.max_frontiers);
-    const Ordering best = BestOrdering(Restrict(problem, chosen));
-    for (size_t f = 0; f < frontiers.size(); ++f) {
-      decision_.pieces.push_back(*frontiers[f]);
-      decision_.properties.push_back(problem.properties[f]);
-    }
-    for (int k : best.order) decision_.order.push_back(chosen[size_t(k)]);
-    return decision_.order.empty() ? -1 : index[size_t(decision_.order.front())];
-  }
-
-  std::unique_ptr<SubgoalEstimator> estimator_;
-  LspOptions o_;
-  PlannerOptions planning_;
-  std::optional<core::Aabb2> region_;
-  std::string name_;
-  LspDecision decision_;
-  std::vector<mapping::Frontier> pieces_;
-};
-
 }  // namespace
+
+LspPlanner::LspPlanner(std::shared_ptr<SubgoalEstimator> estimator, const LspOptions& o, const PlannerOptions& planning,
+                       std::optional<core::Aabb2> region, std::string name)
+    : estimator_(std::move(estimator)), o_(o), planning_(planning), region_(region), name_(std::move(name)) {
+  o.Validate();  // the ranges of max_frontiers, cell and piece_length
+  TOPONAV_CHECK(estimator_, "an LSP planner without an estimator");
+}
+
+std::vector<FrontierChoice> LspPlanner::Plan(const PlanningProblem& p) {
+  TOPONAV_CHECK(p.view && p.graph && p.targets && p.goal && p.agents.size() == 1, "LSP plans for one agent with a goal");
+  decision_ = {};
+  FrontierChoice c;
+  const int piece = ChooseSubgoal(p);
+  const int subgoal = piece >= 0 ? pieces_[size_t(piece)].id : -1;
+  if (subgoal >= 0) {
+    const mapping::MapView masked = MaskOtherPieces(*p.view, pieces_, size_t(piece));
+    c.path = VisibilityGraph(masked, planning_, false).Plan(p.agents[0], *p.goal);
+    if (!c.path)
+      for (const auto& t : *p.targets)
+        if (t.frontier_id == subgoal) c.path = p.graph->Plan(p.agents[0], t.point);
+    c.frontier_id = subgoal;
+  }
+  if (!c.path) {
+    c.path = p.graph->Plan(p.agents[0], *p.goal);  // the optimistic way
+    c.frontier_id = -1;
+  }
+  c.status = c.path.status;
+  return {c};
+}
+
+int LspPlanner::ChooseSubgoal(const PlanningProblem& p) {
+  pieces_.clear();
+  for (const mapping::Frontier& f : p.view->frontiers)
+    for (mapping::Frontier& piece : FrontierPieces(f, o_.piece_length)) pieces_.push_back(std::move(piece));
+  std::vector<const mapping::Frontier*> frontiers;
+  std::vector<int> index;
+  for (const mapping::Frontier* f : TargetFrontiers(*p.view, *p.targets))
+    for (size_t k = 0; k < pieces_.size(); ++k)
+      if (pieces_[k].id == f->id) {
+        frontiers.push_back(&pieces_[k]);
+        index.push_back(int(k));
+      }
+  if (frontiers.empty()) return -1;
+  const SubgoalGrid grid(*p.view, frontiers, p.agents[0], *p.goal, o_.cell, region_);
+  if (grid.goal_known()) return -1;
+  OrderingProblem problem = grid.Distances();
+  const std::vector<SubgoalProperties> estimates = estimator_->Estimate(grid, problem);
+  TOPONAV_CHECK(estimates.size() == frontiers.size(), estimates.size()
+                                                          << " estimates for " << frontiers.size() << " frontiers");
+  for (size_t f = 0; f < frontiers.size(); ++f) problem.properties[f] = Clamped(estimates[f]);
+  const std::vector<int> chosen = SelectFrontiers(problem, o_.max_frontiers);
+  const Ordering best = BestOrdering(Restrict(problem, chosen));
+  for (size_t f = 0; f < frontiers.size(); ++f) {
+    decision_.pieces.push_back(*frontiers[f]);
+    decision_.properties.push_back(problem.properties[f]);
+  }
+  for (int k : best.order) decision_.order.push_back(chosen[size_t(k)]);
+  return decision_.order.empty() ? -1 : index[size_t(decision_.order.front())];
+}
 
 std::vector<mapping::Frontier> FrontierPieces(const mapping::Frontier& frontier, double length) {
   const double total = core::PolylineLength(frontier.points);
@@ -148,7 +131,7 @@ std::unique_ptr<SubgoalEstimator> CreateOracleEstimator(const core::World& world
   return std::make_unique<OracleEstimator>(world, cell, clearance);
 }
 
-std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> estimator, const LspOptions& options,
+std::unique_ptr<LspPlanner> CreateLspPlanner(std::shared_ptr<SubgoalEstimator> estimator, const LspOptions& options,
                                           const PlannerOptions& planning, std::optional<core::Aabb2> region,
                                           std::string name) {
   return std::make_unique<LspPlanner>(std::move(estimator), options, planning, region, std::move(name));
@@ -160,11 +143,6 @@ std::vector<FrontierEstimate> Estimates(const LspDecision& decision) {
     out.push_back({decision.pieces[i].id, decision.pieces[i].points, decision.properties[i].ps, false});
   if (!decision.order.empty()) out[size_t(decision.order.front())].subgoal = true;
   return out;
-}
-
-const LspDecision* LastDecision(const Planner& planner) {
-  const auto* lsp = dynamic_cast<const LspPlanner*>(&planner);
-  return lsp ? &lsp->decision() : nullptr;
 }
 
 }  // namespace toponav::planning

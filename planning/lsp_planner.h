@@ -7,6 +7,7 @@
 // optimistic planner does.
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/option_fields.h"
@@ -46,11 +47,6 @@ struct LspOptions {
   void Validate() const;  // throws core::ConfigError ("lsp.piece_length", ...)
 };
 
-// 'region': the area the world lies in (the raster's extent); 'planning': for the masked path's graph.
-std::unique_ptr<Planner> CreateLspPlanner(std::unique_ptr<SubgoalEstimator> estimator, const LspOptions& options,
-                                          const PlannerOptions& planning, std::optional<core::Aabb2> region,
-                                          std::string name);
-
 // 'frontier' cut into the fewest pieces of equal length at most 'length' (0, or a frontier no longer than it:
 // the frontier itself); each keeps its id, and a cut end has turn 0.
 std::vector<mapping::Frontier> FrontierPieces(const mapping::Frontier& frontier, double length);
@@ -63,7 +59,33 @@ struct LspDecision {
   std::vector<SubgoalProperties> properties;
   std::vector<int> order;
 };
-const LspDecision* LastDecision(const Planner& planner);  // nullptr for planners other than LSP
+
+// The planner.  The estimator is shared: its owner may feed it (the learned one takes the sensor's outputs).
+class LspPlanner : public Planner {
+ public:
+  // 'region': the area the world lies in (the raster's extent); 'planning': for the masked path's graph.
+  LspPlanner(std::shared_ptr<SubgoalEstimator> estimator, const LspOptions& options, const PlannerOptions& planning,
+             std::optional<core::Aabb2> region, std::string name);
+  std::vector<FrontierChoice> Plan(const PlanningProblem& problem) override;
+  std::string name() const override { return name_; }
+  const LspDecision& decision() const { return decision_; }  // the last Plan call's
+
+ private:
+  // The piece (index into pieces_) that begins the best order, or -1 (the goal is known, or nothing to order).
+  int ChooseSubgoal(const PlanningProblem& p);
+
+  std::shared_ptr<SubgoalEstimator> estimator_;
+  LspOptions o_;
+  PlannerOptions planning_;
+  std::optional<core::Aabb2> region_;
+  std::string name_;
+  LspDecision decision_;
+  std::vector<mapping::Frontier> pieces_;
+};
+
+std::unique_ptr<LspPlanner> CreateLspPlanner(std::shared_ptr<SubgoalEstimator> estimator, const LspOptions& options,
+                                             const PlannerOptions& planning, std::optional<core::Aabb2> region,
+                                             std::string name);
 
 // A frontier piece and its estimated Ps (pictures and traces of LSP trials).
 struct FrontierEstimate {

@@ -38,6 +38,39 @@ bool InKnown(const mapping::MapView& view, const Vec2& p) {
   return false;
 }
 
+namespace {
+
+// Exploration also needs to turn at corners of known space that are not map vertices (where it meets unknown
+// space): a node inside each such corner, on the inward bisector, 'r' in, at least 0.9 r from every wall.
+void AddKnownSpaceCorners(const mapping::MapView& view, const std::vector<core::Segment2>& walls, double r,
+                          std::vector<Vec2>* nodes) {
+  auto add_corners = [&](const core::Ring& ring, bool outer) {
+    const size_t n = ring.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Vec2 prev = ring[(i + n - 1) % n], cur = ring[i], next = ring[(i + 1) % n];
+      const double la = core::Distance(prev, cur), lb = core::Distance(cur, next);
+      if (la < 1e-9 || lb < 1e-9) continue;
+      const Vec2 a = (prev - cur) / la, b = (next - cur) / lb;
+      Vec2 bis = a + b;
+      if (core::Norm(bis) < 1e-9) continue;  // straight: no corner
+      bis = bis / core::Norm(bis);
+      // Outer rings are counter-clockwise, so the interior is left of cur->next; flip if the bisector is not.
+      const bool left = core::Cross(b, bis) > 0;
+      if (left != outer) bis = bis * -1.0;
+      const Vec2 p = cur + bis * r;
+      bool ok = InKnown(view, p);
+      for (const auto& w : walls) ok = ok && core::DistanceToSegment(p, w) >= 0.9 * r - 1e-9;
+      if (ok) nodes->push_back(p);
+    }
+  };
+  for (const auto& poly : view.known_space) {
+    add_corners(poly.outer, true);
+    for (const auto& h : poly.holes) add_corners(h, false);
+  }
+}
+
+}  // namespace
+
 VisibilityGraph::VisibilityGraph(const mapping::MapView& view, const PlannerOptions& options, bool require_known)
     : view_(&view), options_(options), require_known_(require_known) {
   options.Validate();
@@ -75,33 +108,7 @@ VisibilityGraph::VisibilityGraph(const mapping::MapView& view, const PlannerOpti
       if (ok) nodes_.push_back(p);
     }
   }
-  // Exploration also needs to turn at corners of known space that are not map vertices (where it meets
-  // unknown space): a node inside each such corner, on the inward bisector.
-  if (require_known_) {
-    auto add_corners = [&](const core::Ring& ring, bool outer) {
-      const size_t n = ring.size();
-      for (size_t i = 0; i < n; ++i) {
-        const Vec2 prev = ring[(i + n - 1) % n], cur = ring[i], next = ring[(i + 1) % n];
-        const double la = core::Distance(prev, cur), lb = core::Distance(cur, next);
-        if (la < 1e-9 || lb < 1e-9) continue;
-        const Vec2 a = (prev - cur) / la, b = (next - cur) / lb;
-        Vec2 bis = a + b;
-        if (core::Norm(bis) < 1e-9) continue;  // straight: no corner
-        bis = bis / core::Norm(bis);
-        // Outer rings are counter-clockwise, so the interior is left of cur->next; flip if the bisector is not.
-        const bool left = core::Cross(b, bis) > 0;
-        if (left != outer) bis = bis * -1.0;
-        const Vec2 p = cur + bis * r;
-        bool ok = InKnown(view, p);
-        for (const auto& w : walls_) ok = ok && core::DistanceToSegment(p, w) >= 0.9 * r - 1e-9;
-        if (ok) nodes_.push_back(p);
-      }
-    };
-    for (const auto& poly : view.known_space) {
-      add_corners(poly.outer, true);
-      for (const auto& h : poly.holes) add_corners(h, false);
-    }
-  }
+  if (require_known_) AddKnownSpaceCorners(view, walls_, r, &nodes_);
   graph_ = Graph(int(nodes_.size()));
   for (size_t i = 0; i < nodes_.size(); ++i)
     for (size_t j = i + 1; j < nodes_.size(); ++j)

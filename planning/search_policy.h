@@ -1,7 +1,7 @@
 #pragma once
 // The pieces of the frontier-search policy, each a small unit: commitment to a chosen frontier (hysteresis),
 // counting the steps agents dwell next to a frontier that does not go away (push-through, then give-up), and
-// detecting agents that make no headway (nudges).  experiments::SearchPolicy composes them with a planner.
+// detecting agents that make no headway (nudges).  planning::SearchNavigator and planning::GoalNavigator compose them with a planner.
 #include <map>
 #include <optional>
 #include <vector>

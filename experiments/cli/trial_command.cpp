@@ -182,7 +182,7 @@ int RunSearchCommand(const TrialArgs& a) {
   if (!a.video.empty()) video = std::make_unique<experiments::TrialVideo>(w, cfg.picture, a.video);
   SearchTrace trace(a.trace, t.num_agents);
   if (trace.is_open())
-    t.on_plan = [&](const experiments::LoopState&, const std::vector<planning::FrontierTarget>& targets,
+    t.on_plan = [&](const planning::NavigatorInput&, const std::vector<planning::FrontierTarget>& targets,
                     const std::vector<planning::FrontierChoice>& choices) { trace.Plan(targets, choices); };
   if (video || trace.is_open())
     t.on_step = [&](const mapping::MapView& v, const std::vector<std::vector<core::Vec2>>& paths) {

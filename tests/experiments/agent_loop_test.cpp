@@ -10,10 +10,10 @@ namespace toponav::experiments {
 namespace {
 
 // Walks every agent east for 'steps' steps, then ends the run; records what it saw.
-class WalkEast : public AgentPolicy {
+class WalkEast : public planning::Navigator {
  public:
   explicit WalkEast(int steps) : steps_(steps) {}
-  bool Plan(const LoopState& state, std::vector<std::vector<core::Vec2>>* paths) override {
+  bool Plan(const planning::NavigatorInput& state, std::vector<std::vector<core::Vec2>>* paths) override {
     observations.push_back(state.view->num_observations);
     max_steps = state.max_steps;
     this_step.push_back(state.observations ? int(state.observations->size()) : -1);
@@ -21,33 +21,33 @@ class WalkEast : public AgentPolicy {
     for (size_t a = 0; a < paths->size(); ++a) (*paths)[a] = {state.poses[a].position() + core::Vec2{10, 0}};
     return true;
   }
-  sim::StepResult AfterStep(const LoopState& state, int agent, const sim::StepResult& step, sim::MotionSim& motion,
-                            core::Rng& rng) override {
+  std::optional<core::Vec2> AfterStep(const planning::NavigatorInput& state, int agent,
+                                      const planning::MotionOutcome& step, core::Rng& rng) override {
     ++after_steps;
-    return step;
+    return std::nullopt;
   }
   std::vector<int> observations, this_step;
   int after_steps = 0;
-  int max_steps = -1;  // what the loop told the policy its cap is
+  int max_steps = -1;  // what the loop told the navigator its cap is
 
  private:
   int steps_;
 };
 
-TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndThePolicyEndsTheRun) {
+TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndTheNavigatorEndsTheRun) {
   const core::World w = testing::RoomWorld(60, 30);
   Config config;
-  WalkEast policy(4);
+  WalkEast navigator(4);
   LoopOptions o;
   o.num_agents = 2;
   int calls = 0;
   o.on_step = [&](const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&) { ++calls; };
-  const LoopResult r = RunAgentLoop(w, config, o, policy, 5);
+  const LoopResult r = RunAgentLoop(w, config, o, navigator, 5);
   EXPECT_EQ(r.steps, 5) << "four steps moved, the fifth ended the run";
-  EXPECT_TRUE(r.ended_by_policy);
-  EXPECT_EQ(policy.observations, (std::vector<int>{2, 4, 6, 8, 10})) << "both agents observe every step";
-  EXPECT_EQ(policy.this_step, (std::vector<int>{2, 2, 2, 2, 2})) << "the policy sees this step's observations";
-  EXPECT_EQ(policy.after_steps, 8);
+  EXPECT_TRUE(r.ended_by_navigator);
+  EXPECT_EQ(navigator.observations, (std::vector<int>{2, 4, 6, 8, 10})) << "both agents observe every step";
+  EXPECT_EQ(navigator.this_step, (std::vector<int>{2, 2, 2, 2, 2})) << "the navigator sees this step's observations";
+  EXPECT_EQ(navigator.after_steps, 8);
   EXPECT_EQ(calls, 5) << "after each of the 4 moves, and once with the final map";
   ASSERT_EQ(r.paths.size(), 2u);
   EXPECT_EQ(r.paths[0].size(), 5u);
@@ -62,7 +62,7 @@ TEST(AgentLoop, EveryAgentObservesEachStepMovesAlongItsPathAndThePolicyEndsTheRu
 TEST(AgentLoop, ATeamStandingTogetherAddsItsSharedViewToTheMapOnce) {
   // Three agents start at the same pose and walk east together, staying on one pose.  With a sensor that
   // sees the same place the same way, their views are one look: the map gets one observation a step, the
-  // policy still all three.
+  // navigator still all three.
   const core::World w = testing::RoomWorld(60, 30);
   Config config;
   sim::NoisySensorOptions& s = config.sensor.noisy;
@@ -81,29 +81,29 @@ TEST(AgentLoop, ATeamStandingTogetherAddsItsSharedViewToTheMapOnce) {
   EXPECT_EQ(noisy.observations, (std::vector<int>{3, 6, 9}));
 }
 
-TEST(AgentLoop, TheStepCapEndsARunThePolicyDoesNot) {
+TEST(AgentLoop, TheStepCapEndsARunTheNavigatorDoesNot) {
   const core::World w = testing::RoomWorld(60, 30);
-  WalkEast policy(1000);
+  WalkEast navigator(1000);
   LoopOptions o;
   o.max_steps = 7;
   o.mcmc_every = 3;
   const Config config;
-  const LoopResult r = RunAgentLoop(w, config, o, policy, 5);
+  const LoopResult r = RunAgentLoop(w, config, o, navigator, 5);
   EXPECT_EQ(r.steps, 7);
-  EXPECT_EQ(policy.max_steps, 7) << "the policy knows the cap (an inspection it cannot finish is not started)";
-  EXPECT_FALSE(r.ended_by_policy);
+  EXPECT_EQ(navigator.max_steps, 7) << "the navigator knows the cap (an inspection it cannot finish is not started)";
+  EXPECT_FALSE(r.ended_by_navigator);
   EXPECT_EQ(r.mcmc_calls, 3) << "steps 0, 3 and 6";
 }
 
 TEST(AgentLoop, ThePathBudgetIsTheStepsLeftBeforeTheCapLessTheReserveTimesTheStepLength) {
-  LoopState s;
+  planning::NavigatorInput s;
   s.step_length = 2.0;
   s.step = 90;
-  EXPECT_EQ(PathBudget(s, 6), std::numeric_limits<double>::infinity()) << "no cap";
+  EXPECT_EQ(planning::PathBudget(s, 6), std::numeric_limits<double>::infinity()) << "no cap";
   s.max_steps = 100;  // steps 90 .. 99 are left: 10, 6 of them in hand
-  EXPECT_DOUBLE_EQ(PathBudget(s, 6), 8.0);
-  EXPECT_DOUBLE_EQ(PathBudget(s, 0), 20.0);
-  EXPECT_DOUBLE_EQ(PathBudget(s, 12), 0.0) << "never negative";
+  EXPECT_DOUBLE_EQ(planning::PathBudget(s, 6), 8.0);
+  EXPECT_DOUBLE_EQ(planning::PathBudget(s, 0), 20.0);
+  EXPECT_DOUBLE_EQ(planning::PathBudget(s, 12), 0.0) << "never negative";
 }
 
 TEST(AgentLoop, TheSameSeedGivesTheSameMap) {

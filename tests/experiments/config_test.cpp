@@ -128,7 +128,7 @@ TEST(Config, EachKeysRangeIsDeclaredOnceForTheReaderAndValidate) {
       "mapping", [](Config & c) -> auto& { return c.mapping; });
   ExpectOneRangePerKey<planning::PlannerOptions>(
       "planning", [](Config & c) -> auto& { return c.planning; });
-  ExpectOneRangePerKey<SearchOptions>(
+  ExpectOneRangePerKey<planning::SearchOptions>(
       "search", [](Config & c) -> auto& { return c.search; });
   ExpectOneRangePerKey<sim::NoisySensorOptions>(
       "sensor", [](Config & c) -> auto& { return c.sensor.noisy; });
@@ -138,7 +138,7 @@ TEST(Config, EachKeysRangeIsDeclaredOnceForTheReaderAndValidate) {
       "render", [](Config & c) -> auto& { return c.render; });
   ExpectOneRangePerKey<OpenWorldOptions>(
       "open_world", [](Config & c) -> auto& { return c.open_world; });
-  ExpectOneRangePerKey<NavigationOptions>(
+  ExpectOneRangePerKey<planning::NavigationOptions>(
       "navigation", [](Config & c) -> auto& { return c.navigation; });
   ExpectOneRangePerKey<BenchOptions>(
       "bench", [](Config & c) -> auto& { return c.bench; });
@@ -199,7 +199,7 @@ TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   EXPECT_EQ(ErrorOf("search:\n  sealed_reach: -1\n").key(), "search.sealed_reach");
   EXPECT_EQ(c.search.unreachable_steps, 9);
   EXPECT_DOUBLE_EQ(c.search.switch_ratio, 2.0);
-  EXPECT_DOUBLE_EQ(c.search.push_distance, SearchOptions{}.push_distance) << "unset keys keep their defaults";
+  EXPECT_DOUBLE_EQ(c.search.push_distance, planning::SearchOptions{}.push_distance) << "unset keys keep their defaults";
   const auto e = ErrorOf("search:\n  switch_ratio: 0.5\n");
   EXPECT_EQ(e.file(), "configs/bad.yaml");
   EXPECT_EQ(e.key(), "search.switch_ratio");
@@ -276,10 +276,18 @@ TEST(Config, AFrontierPieceShorterThanTheLspCellIsAnError) {
   EXPECT_NO_THROW(ParseConfig("lsp:\n  piece_length: 0\n", "k.yaml")) << "0: frontiers whole";
 }
 
-TEST(Config, AHeldAgentScansBeforeTheStuckTestEndsItsTrial) {
-  EXPECT_EQ(NavigationOptions{}.scan_when_held, 0) << "off unless set";
-  EXPECT_EQ(ParseConfig("navigation:\n  scan_when_held: 20\n", "k.yaml").navigation.scan_when_held, 20);
-  const auto e = ErrorOf("navigation:\n  stuck_window: 30\n  scan_when_held: 30\n");
+TEST(Config, AHeldAgentScansWithADeclaredRangeRingBeforeTheStuckTestEndsItsTrial) {
+  EXPECT_EQ(planning::NavigationOptions{}.scan_when_held, 0) << "off unless set";
+  const std::string ring = "sensor:\n  range_ring: {rays: 360, range: 12}\n";
+  const Config c = ParseConfig(ring + "navigation:\n  scan_when_held: 20\n", "k.yaml");
+  EXPECT_EQ(c.navigation.scan_when_held, 20);
+  EXPECT_EQ(c.sensor.range_ring.rays, 360);
+  EXPECT_EQ(SensorsUsed(c.sensor), "noisy+range_ring");
+  const auto none = ErrorOf("navigation:\n  scan_when_held: 20\n");
+  EXPECT_EQ(none.key(), "navigation.scan_when_held") << "scans need a declared range ring";
+  EXPECT_NE(std::string(none.what()).find("sensor.range_ring"), std::string::npos) << none.what();
+  EXPECT_EQ(ErrorOf("sensor:\n  range_ring: {rays: -3}\n").key(), "sensor.range_ring.rays");
+  const auto e = ErrorOf(ring + "navigation:\n  stuck_window: 30\n  scan_when_held: 30\n");
   EXPECT_EQ(e.key(), "navigation.scan_when_held");
   EXPECT_EQ(e.value(), "30");
   EXPECT_EQ(ErrorOf("navigation:\n  scan_when_held: -1\n").key(), "navigation.scan_when_held");

@@ -151,13 +151,13 @@ TEST(SensorFactory, ASubgoalModelBesideTheVertexModelFillsTheCellsAndLeavesTheVe
   SensorSetup setup{&w, {}, std::nullopt, 1};
   setup.goal_at_agent = true;
   const core::Observation z = CreateSensor(c.sensor, setup)->Observe(w.start, 0);
-  EXPECT_FALSE(z.cells.empty()) << "the subgoal model's outputs";
+  EXPECT_FALSE(z.subgoal.empty()) << "the subgoal model's outputs";
   const learning::GridOutput out = learning::VertexModel::Load(vertex).Predict(sim::Renderer(w, {}).Render(w.start));
   learning::DecodeOptions decode;
   decode.threshold = 0.3f;
   EXPECT_EQ(z.detections.size(), learning::DecodeDetections(out.vertex, out.labels, out.grid, decode).size())
       << "the vertex model's detections";
-  EXPECT_TRUE(CreateSensor(c.sensor, {&w, {}, std::nullopt, 1})->Observe(w.start, 0).cells.empty()) << "no goal";
+  EXPECT_TRUE(CreateSensor(c.sensor, {&w, {}, std::nullopt, 1})->Observe(w.start, 0).subgoal.empty()) << "no goal";
   // A vertex network named as the subgoal model is an error naming its file.
   SensorConfig swapped = c.sensor;
   swapped.learned.subgoal_model = vertex;

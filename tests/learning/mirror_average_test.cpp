@@ -57,13 +57,16 @@ TEST(LearnedDetector, WithMirrorAveragingTheMirroredPanoramaGivesTheMirroredDete
     EXPECT_NEAR(twin->labels[0], d.labels[2], 1e-5) << "right and left gaps trade places";
     EXPECT_NEAR(twin->labels[1], d.labels[1], 1e-5);
   }
+  constexpr float core::SubgoalCell::*kOutputs[] = {&core::SubgoalCell::ps, &core::SubgoalCell::delta_success,
+                                                    &core::SubgoalCell::exploration};  // Ps and the two costs
   for (int col : {0, 3, 77, 128})
-    for (int channel : {0, 1, 2})  // Ps and the two costs
-      EXPECT_NEAR(m.cells.at(20, (256 - col) % 256, channel), z.cells.at(20, col, channel),
-                  1e-5 * std::max(1.0f, std::abs(z.cells.at(20, col, channel))))
-          << col << " " << channel;
+    for (size_t k = 0; k < 3; ++k) {
+      const float want = z.subgoal.at(20, col).*kOutputs[k];
+      EXPECT_NEAR(m.subgoal.at(20, (256 - col) % 256).*kOutputs[k], want, 1e-5 * std::max(1.0f, std::abs(want)))
+          << col << " " << k;
+    }
   const auto plain = CreateLearnedDetector(path, {})->Detect(image, {{}, 0, core::Vec2{30.0, 40.0}});
-  EXPECT_GT(std::abs(plain.cells.at(20, 3, 0) - z.cells.at(20, 3, 0)), 1e-6) << "the mirrored pass counts";
+  EXPECT_GT(std::abs(plain.subgoal.at(20, 3).ps - z.subgoal.at(20, 3).ps), 1e-6) << "the mirrored pass counts";
 }
 
 }  // namespace

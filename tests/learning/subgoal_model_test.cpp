@@ -106,20 +106,19 @@ TEST(LearnedDetector, ASubgoalModelGivenAGoalFillsTheCellsWithPsAndTheTwoCosts) 
   const Examples e = MakeExamples();
   core::DetectionContext context{{1.0, 2.0, 0.3}, 0, core::Vec2{30.0, 40.0}};
   const core::Observation z = detector->Detect(e.images[0], context);
-  ASSERT_EQ(z.cells.channels, (std::vector<std::string>{"ps", "delta_success", "exploration"}));
-  EXPECT_EQ(z.cells.rows, 64);
-  EXPECT_EQ(z.cells.cols, 256);
-  EXPECT_EQ(z.cells.max_range, 100.0);
+  EXPECT_EQ(z.subgoal.rows, 64);
+  EXPECT_EQ(z.subgoal.cols, 256);
+  EXPECT_EQ(z.subgoal.max_range, 100.0);
   const SubgoalOutput want = m.PredictWithGoal(e.images[0], {50.0, std::atan2(40.0, 30.0)}).second;
   for (int row : {0, 10, 63})
     for (int col : {0, 77, 255}) {
       const size_t i = want.grid.Index(row, col);
-      EXPECT_FLOAT_EQ(z.cells.at(row, col, 0), want.ps[i]);
-      EXPECT_FLOAT_EQ(z.cells.at(row, col, 1), want.delta_success[i]);
-      EXPECT_FLOAT_EQ(z.cells.at(row, col, 2), want.exploration[i]);
+      EXPECT_FLOAT_EQ(z.subgoal.at(row, col).ps, want.ps[i]);
+      EXPECT_FLOAT_EQ(z.subgoal.at(row, col).delta_success, want.delta_success[i]);
+      EXPECT_FLOAT_EQ(z.subgoal.at(row, col).exploration, want.exploration[i]);
     }
   context.goal.reset();
-  EXPECT_TRUE(detector->Detect(e.images[0], context).cells.empty()) << "no goal, no subgoal outputs";
+  EXPECT_TRUE(detector->Detect(e.images[0], context).subgoal.empty()) << "no goal, no subgoal outputs";
   fs::remove(path);
 }
 

@@ -28,14 +28,12 @@ struct Scene {
 core::Observation Observed(const core::Pose2& pose, float ahead, float elsewhere, float explore) {
   core::Observation z;
   z.pose = pose;
-  z.cells.rows = 32;
-  z.cells.cols = 128;
-  z.cells.max_range = 100;
-  z.cells.channels = {"exploration", "ps", "delta_success"};  // any order
+  z.subgoal.rows = 32;
+  z.subgoal.cols = 128;
+  z.subgoal.max_range = 100;
   for (int r = 0; r < 32; ++r)
     for (int b = 0; b < 128; ++b)
-      z.cells.values.insert(z.cells.values.end(),
-                            {explore, std::abs(core::ColumnToBearing(b, 128)) < 0.6 ? ahead : elsewhere, 10.0f});
+      z.subgoal.values.push_back({std::abs(core::ColumnToBearing(b, 128)) < 0.6 ? ahead : elsewhere, 10.0f, explore});
   return z;
 }
 
@@ -85,17 +83,17 @@ TEST(CellAveragingEstimator, ACalibratedEstimatorMapsThePsOfSeenFrontiersAndLeav
   EXPECT_EQ(e.seen(), std::vector<char>(p.size(), 1));
 }
 
-TEST(CellAveragingEstimator, KeepsOnlyGridsWithTheThreeChannels) {
+TEST(CellAveragingEstimator, KeepsObservationsWithSubgoalCellsAndRefusesCellsThatDoNotFillTheirGrid) {
   CellAveragingEstimator e;
   e.Observe(core::Observation{});  // no cells (the noisy sensor): ignored
   EXPECT_EQ(e.observations(), 0u);
   core::Observation z = Observed({7, 7, 0.0}, 0.5f, 0.5f, 1.0f);
   for (int i = 0; i < 3; ++i) e.Observe(z);
   EXPECT_EQ(e.observations(), 3u);
-  z.cells.channels[1] = "logit";
+  z.subgoal.values.pop_back();
   EXPECT_THROW(e.Observe(z), core::DataError);
   z = Observed({7, 7, 0.0}, 0.5f, 0.5f, 1.0f);
-  z.cells.values.pop_back();
+  z.subgoal.rows = 0;
   EXPECT_THROW(e.Observe(z), core::DataError);
 }
 

@@ -41,8 +41,8 @@ struct Scene {
 };
 
 std::vector<FrontierChoice> PlanWith(Scene& s, std::unique_ptr<SubgoalEstimator> e,
-                                     const Planner** planner_out = nullptr) {
-  static std::unique_ptr<Planner> planner;
+                                     const LspPlanner** planner_out = nullptr) {
+  static std::unique_ptr<LspPlanner> planner;
   planner = CreateLspPlanner(std::move(e), {}, s.options, s.world.bounds, "test");
   const VisibilityGraph graph(s.view, s.options, false);
   const PlanningProblem p{&s.view, &graph, &s.targets, {s.world.start.position()}, s.world.goal};
@@ -53,12 +53,11 @@ std::vector<FrontierChoice> PlanWith(Scene& s, std::unique_ptr<SubgoalEstimator>
 TEST(LspPlanner, TheOracleHeadsUpTheStemNotIntoTheDeadEndTheOptimisticPlannerTakes) {
   Scene s;
   ASSERT_EQ(s.targets.size(), 2u);
-  const Planner* planner = nullptr;
+  const LspPlanner* planner = nullptr;
   const auto oracle = PlanWith(s, CreateOracleEstimator(s.world, 1.0, 1.0), &planner);
   ASSERT_EQ(oracle[0].status, PlanStatus::kFound);
   EXPECT_EQ(oracle[0].frontier_id, 2);
-  const LspDecision* d = LastDecision(*planner);
-  ASSERT_NE(d, nullptr);
+  const LspDecision* d = &planner->decision();
   EXPECT_EQ(Ids(*d), (std::vector<int>{1, 2}));
   EXPECT_EQ(d->properties[0].ps, 0.0);
   EXPECT_EQ(d->order, (std::vector<int>{1})) << "the dead end (Ps 0) is not worth ordering";
@@ -78,18 +77,16 @@ TEST(LspPlanner, TheOracleHeadsUpTheStemNotIntoTheDeadEndTheOptimisticPlannerTak
 
 TEST(LspPlanner, EstimatesOutsideTheirRangesAreClampedBeforeOrdering) {
   Scene s;
-  const Planner* planner = nullptr;
+  const LspPlanner* planner = nullptr;
   PlanWith(s, std::make_unique<FixedEstimator>(std::vector<SubgoalProperties>{{1.8, -20, -5}, {-0.3, 10, 10}}),
            &planner);
-  const LspDecision* d = LastDecision(*planner);
-  ASSERT_NE(d, nullptr);
+  const LspDecision* d = &planner->decision();
   ASSERT_EQ(Ids(*d), (std::vector<int>{1, 2}));
   EXPECT_EQ(d->order, (std::vector<int>{0})) << "Ps below 0 becomes 0: not worth ordering";
   EXPECT_EQ(d->properties[1].ps, 0.0);
   EXPECT_EQ(d->properties[0].ps, 1.0);
   EXPECT_EQ(d->properties[0].delta_success, 0.0);
   EXPECT_EQ(d->properties[0].exploration, 0.0);
-  EXPECT_EQ(LastDecision(*CreatePlanner(PlannerKind::kOptimistic)), nullptr);
 }
 
 TEST(LspPlanner, FrontierPiecesCutALongFrontierIntoEqualPiecesThatJoinUp) {
@@ -142,8 +139,7 @@ TEST(LspPlanner, TheOracleCrossesALongFrontierWhereTheWayGoesOnNotWhereTheStraig
     const FrontierChoice choice = planner->Plan(p).at(0);
     ASSERT_EQ(choice.status, PlanStatus::kFound);
     EXPECT_EQ(choice.frontier_id, 1);
-    const LspDecision* d = LastDecision(*planner);
-    ASSERT_NE(d, nullptr);
+    const LspDecision* d = &planner->decision();
     ASSERT_GE(choice.path.points.size(), 2u);
     if (piece_length == 0) {
       EXPECT_GT(choice.path.points[1].x, 50.0) << "the whole frontier: over it by the pocket's corner";

@@ -1,0 +1,140 @@
+#include "planning/goal_navigator.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "tests/planning/dead_end_view.h"
+#include "tests/testing/worlds.h"
+
+namespace toponav::planning {
+namespace {
+
+using core::Vec2;
+
+// The goal navigator in the dead-end maze (testing::DeadEndMaze), planning on a hand-made map: no simulator,
+// no sensor, no motion linked.
+struct Scene {
+  core::World world = ::toponav::testing::DeadEndMaze();
+  mapping::MapView view = testing::DeadEndSeenFromStart();
+  std::vector<std::vector<Vec2>> trails{{}};
+  std::vector<core::Observation> observations{1};
+
+  GoalNavigatorSetup Setup(GoalPlanner planner) const {
+    GoalNavigatorSetup s;
+    s.planner = planner;
+    s.goal = world.goal;
+    s.region = world.bounds;
+    s.planning.frontier_row_gap = 10.0;  // below the 14-wide openings
+    if (NeedsTrueWorld(planner)) s.truth = &world;
+    return s;
+  }
+  // One step of 'navigator' with the agent at 'at' (its trail so far: 'trails'); the ways it planned.
+  bool Step(GoalNavigator& navigator, const Vec2& at, std::vector<std::vector<Vec2>>* ways) {
+    NavigatorInput in;
+    in.step_length = 1.8;
+    in.view = &view;
+    in.poses = {{at.x, at.y, 0.0}};
+    observations[0].pose = in.poses[0];
+    in.observations = &observations;
+    in.trails = &trails;
+    ways->assign(1, {});
+    return navigator.Plan(in, ways);
+  }
+};
+
+TEST(GoalNavigator, PlansOnAHandMadeMapViewWithNoSimulatorLinked) {
+  Scene s;
+  const Vec2 start = s.world.start.position();
+  GoalNavigator optimistic(s.Setup(GoalPlanner::kOptimistic));
+  std::vector<Vec2> decided;
+  optimistic.on_decision = [&](const NavigationDecision& d) { decided = d.way; };
+  std::vector<std::vector<Vec2>> ways;
+  ASSERT_TRUE(s.Step(optimistic, start, &ways));
+  ASSERT_FALSE(ways[0].empty());
+  ASSERT_GE(decided.size(), 2u);
+  EXPECT_EQ(decided.front(), start) << "the decision's way starts where the agent stands";
+  EXPECT_EQ(decided[1], ways[0].front()) << "and the agent follows it";
+  EXPECT_LT(ways[0].front().y, 20.0) << "optimistic: along the bottom corridor, into the dead end";
+  EXPECT_TRUE(optimistic.estimates().empty());
+
+  GoalNavigator oracle(s.Setup(GoalPlanner::kOracle));
+  ASSERT_TRUE(s.Step(oracle, start, &ways));
+  ASSERT_FALSE(ways[0].empty());
+  EXPECT_GT(ways[0].front().y, 20.0) << "the oracle heads up the stem";
+  EXPECT_EQ(oracle.estimates().size(), 2u) << "both frontiers estimated";
+
+  GoalNavigator lsp(s.Setup(GoalPlanner::kLsp));
+  ASSERT_TRUE(s.Step(lsp, start, &ways));
+  ASSERT_FALSE(ways[0].empty());
+  EXPECT_LT(ways[0].front().y, 20.0) << "no subgoal estimates seen: every frontier optimistic";
+}
+
+TEST(GoalNavigator, TheOracleAndKnownRefuseToRunWithoutTheTrueWorldAndTheOthersRefuseIt) {
+  const Scene s;
+  for (const GoalPlanner p : {GoalPlanner::kOracle, GoalPlanner::kKnown}) {
+    GoalNavigatorSetup setup = s.Setup(p);
+    setup.truth = nullptr;
+    try {
+      GoalNavigator navigator(setup);
+      ADD_FAILURE() << ToString(p) << " ran without its privileged input";
+    } catch (const core::ConfigError& e) {
+      EXPECT_EQ(e.key(), "planner");
+      EXPECT_EQ(e.value(), ToString(p));
+    }
+  }
+  for (const GoalPlanner p : {GoalPlanner::kOptimistic, GoalPlanner::kLsp}) {
+    GoalNavigatorSetup setup = s.Setup(p);
+    setup.truth = &s.world;
+    EXPECT_THROW(GoalNavigator{setup}, core::ConfigError) << ToString(p) << " plans from the sensors only";
+  }
+}
+
+TEST(GoalNavigator, EndsAtTheGoalAndWhenHeldInPlaceForTheStuckWindow) {
+  Scene s;
+  GoalNavigator at_goal(s.Setup(GoalPlanner::kOptimistic));
+  std::vector<std::vector<Vec2>> ways;
+  EXPECT_FALSE(s.Step(at_goal, s.world.goal + Vec2{3, 0}, &ways));
+  EXPECT_EQ(at_goal.end_reason(), "goal");
+
+  GoalNavigatorSetup setup = s.Setup(GoalPlanner::kOptimistic);
+  setup.navigation.stuck_window = 5;
+  GoalNavigator held(setup);
+  const Vec2 start = s.world.start.position();
+  s.trails[0].assign(5, start);
+  EXPECT_TRUE(s.Step(held, start + Vec2{20, 0}, &ways)) << "moved away: not held";
+  EXPECT_EQ(held.end_reason(), "step_cap") << "not ended";
+  EXPECT_FALSE(s.Step(held, start, &ways));
+  EXPECT_EQ(held.end_reason(), "stuck");
+}
+
+TEST(GoalNavigator, AHeldAgentPlansWithTheRangeRingsScansAndWithoutARingTheOptionIsAnError) {
+  Scene s;
+  GoalNavigatorSetup setup = s.Setup(GoalPlanner::kOptimistic);
+  setup.navigation.scan_when_held = 3;
+  const Vec2 start = s.world.start.position();
+  s.trails[0] = {start, start, start};
+  std::vector<std::vector<Vec2>> ways;
+  GoalNavigator blind(setup);
+  try {
+    s.Step(blind, start, &ways);
+    ADD_FAILURE() << "held without a range ring's scans";
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(e.key(), "navigation.scan_when_held");
+  }
+  // A ring whose rays all hit 4 units away: the agent stands in a closed round room.
+  core::RangeScan scan;
+  scan.max_range = 12;
+  scan.ranges.assign(360, 4.0);
+  s.observations[0].scan = scan;
+  GoalNavigator ringed(setup);
+  ASSERT_TRUE(s.Step(ringed, start, &ways));
+  EXPECT_EQ(ringed.counts().scan_steps, 1);
+  ASSERT_FALSE(ringed.scan_walls().empty());
+  for (const core::Segment2& w : ringed.scan_walls()) {
+    EXPECT_NEAR(core::Distance(w.a, start), 4.0, 0.05) << "the walls the ring's hits show, round the agent";
+    EXPECT_NEAR(core::Distance(w.b, start), 4.0, 0.05);
+  }
+}
+
+}  // namespace
+}  // namespace toponav::planning
