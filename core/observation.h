@@ -63,6 +63,14 @@ struct RangeScan {
   double Angle(size_t j) const;  // the world direction of ray j (radians)
 };
 
+// What an agent's motion showed: at 'at' it pressed toward 'toward' and could not pass (contact evidence: a
+// wall within 'reach' of 'at' that way is real).
+struct Contact {
+  Vec2 at;
+  Vec2 toward;
+  double reach = 0.0;  // world units
+};
+
 struct Observation {
   Pose2 pose;                        // where the agent was (world frame)
   int agent = 0;                     // which agent observed

@@ -31,8 +31,9 @@ void MoveAgents(const planning::NavigatorInput& state, const std::vector<std::ve
                 "the navigator planned " << paths.size() << " paths for " << r->paths.size() << " agents");
   for (size_t a = 0; a < paths.size(); ++a) {
     sim::StepResult s = motion.Step(int(a), paths[a]);
-    const std::optional<core::Vec2> nudge = navigator.AfterStep(state, int(a), {s.pose, s.distance, s.blocked}, rng);
-    if (nudge) s = motion.Nudge(int(a), *nudge);
+    const planning::StepResponse response = navigator.AfterStep(state, int(a), {s.pose, s.distance, s.blocked}, rng);
+    if (response.contact) r->mapper->AddContact(*response.contact);
+    if (response.nudge) s = motion.Nudge(int(a), *response.nudge);
     r->distance[a] += s.distance;
     r->paths[a].push_back(s.pose.position());
   }
@@ -91,7 +92,7 @@ LoopResult RunAgentLoop(const core::World& world, const Config& config, const Lo
   r.mapper = std::make_unique<mapping::Mapper>(MapperOptionsFor(world, config, o));
   mapping::Mapper& mapper = *r.mapper;
   auto sensor = CreateSensor(SensorFor(config, world),
-                             {&world, config.render, o.goal, core::DeriveSeed(seed, 1), o.goal_at_agent});
+                             {&world, config.render, o.goal, core::DeriveSeed(seed, 1)});
   core::Rng rng(core::DeriveSeed(seed, 2));
   const sim::MotionOptions motion_options = MotionFor(config, world);
   sim::MotionSim motion(world, motion_options);

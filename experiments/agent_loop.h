@@ -29,7 +29,6 @@ struct LoopOptions {
   int mcmc_samples = -1;
   // Goal-directed runs: the goal, which the sensor passes to goal-conditioned detectors; none for a search.
   std::optional<core::Vec2> goal;
-  bool goal_at_agent = false;  // searches whose network estimates what lies past frontiers (SensorSetup)
   // After every step with the map the navigator used and the agents' paths so far, and once more with the final
   // map the metrics score (videos).
   std::function<void(const mapping::MapView&, const std::vector<std::vector<core::Vec2>>&)> on_step;

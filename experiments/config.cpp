@@ -69,9 +69,6 @@ namespace {
 
 // Rules that tie keys of different sections together (each names the key to change).
 void ValidateAcrossSections(const Config& c) {
-  if (c.search.exploration_estimate == "learned" && c.sensor.kind != SensorKind::kLearned)
-    throw core::ConfigError(c.source, "search.exploration_estimate", "learned",
-                            "needs sensor.kind learned (a subgoal model: train.subgoal)");
   // A split must not cut a frontier into pieces the planner ignores (an opening would vanish).
   if (c.mapping.frontier_split_min_length < c.planning.frontier_min_length)
     throw core::ConfigError(
@@ -177,7 +174,6 @@ void ReadSensor(YamlSection s, SensorConfig* sensor) {
 }
 
 void ReadSearch(YamlSection s, planning::SearchOptions* search) {
-  s.Read("exploration_estimate", &search->exploration_estimate);
   s.ReadFields(search, planning::SearchOptions::Fields());
   s.Finish();
 }

@@ -34,11 +34,11 @@ class FollowPath : public planning::Navigator {
     (*paths)[0].assign(path_.begin() + long(next_), path_.end());
     return true;
   }
-  std::optional<core::Vec2> AfterStep(const planning::NavigatorInput& input, int agent,
-                                      const planning::MotionOutcome& s, core::Rng& rng) override {
+  planning::StepResponse AfterStep(const planning::NavigatorInput& input, int agent, const planning::MotionOutcome& s,
+                                   core::Rng& rng) override {
     while (next_ < path_.size() && core::Distance(s.pose.position(), path_[next_]) < 0.5 * input.step_length) ++next_;
     if (s.blocked) ++next_;
-    return std::nullopt;
+    return {};
   }
 
  private:

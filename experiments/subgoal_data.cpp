@@ -5,7 +5,6 @@
 #include "core/error.h"
 #include "experiments/navigation_trial.h"
 #include "experiments/trial.h"
-#include "planning/frontier_exploration.h"
 #include "sim/raycast.h"
 #include "sim/render.h"
 #include "sim/worlds.h"

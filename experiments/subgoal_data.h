@@ -4,7 +4,7 @@
 // true properties of the frontiers on offer (planning::TrueSubgoalProperties on the agent's own map)
 // rasterized on the range-bearing grid where the agent sees them.  In other worlds the agent searches (the
 // config's search options, one agent) and the goal is where it stands, so every frontier is labelled with
-// its exploration cost (planning/frontier_exploration.h).  The panorama and the vertex labels of a sample are
+// its exploration cost (planning::ProblemWithoutDistances).  The panorama and the vertex labels of a sample are
 // a pure function of the world and the pose (rendered when needed).
 #include <cstdint>
 #include <functional>

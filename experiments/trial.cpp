@@ -48,7 +48,7 @@ BuildingPlacementBreakdown BreakDownBuildingPlacement(const core::World& world, 
 
 namespace {
 
-// The search navigator's setup from the config: the true world only for search.exploration_estimate oracle.
+// The search navigator's setup from the config (no privileged input: a search plans from the sensors only).
 planning::SearchNavigatorSetup SearchSetup(const core::World& world, const Config& config, int num_agents) {
   planning::SearchNavigatorSetup s;
   s.num_agents = num_agents;
@@ -58,9 +58,6 @@ planning::SearchNavigatorSetup SearchSetup(const core::World& world, const Confi
   s.search = config.search;
   s.navigation = config.navigation;
   s.planning = config.planning;
-  s.lsp = config.lsp;
-  s.model = config.sensor.learned.model;
-  if (config.search.exploration_estimate == "oracle") s.truth = &world;
   return s;
 }
 
@@ -77,7 +74,6 @@ TrialResult RunSearchTrial(const core::World& world, const Config& config, const
   lo.num_agents = o.num_agents;
   lo.max_steps = o.max_steps;
   lo.on_step = o.on_step;
-  lo.goal_at_agent = navigator.wants_goal_at_agent();
   // MCMC cadence; open worlds spread the same proposals per step over more frequent calls.
   lo.mcmc_every = o.mcmc_every > 0 && open_world ? o.open_world_mcmc_every : o.mcmc_every;
   if (o.mcmc_every > 0)

@@ -4,6 +4,8 @@
 // items 2-3, 7).
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <unordered_set>
 #include <string>
 
 #include "core/error.h"
@@ -107,6 +109,7 @@ struct Mapper::Impl {
   // options.defer_to_mcmc, otherwise the live state.
   internal::MapState view_map;
   MapperStats stats;
+  std::unordered_set<uint64_t> confirmed;  // walls (WallKey) an agent pressed against and could not pass
 
   const internal::MapState& ViewMap() {
     if (!core.o.defer_to_mcmc) view_map = core.walls.State(core.vertices);
@@ -156,8 +159,10 @@ MapView Mapper::Impl::MakeView(double tolerance) {
     const MapVertex mv{int(i), internal::ToVec(x.x), internal::FromEigen(x.P), x.n};
     (ms.mapped[i] ? view.vertices : view.rejected).push_back(mv);
   }
-  for (const auto& [a, b] : ms.walls)
-    view.walls.push_back({a, b, core.Pos(a), core.Pos(b), core.walls.Prob(a, b, ms.mapped)});
+  for (const auto& [a, b] : ms.walls) {
+    const bool certain = confirmed.count(internal::WallKey(a, b)) > 0;
+    view.walls.push_back({a, b, core.Pos(a), core.Pos(b), certain ? 1.0 : core.walls.Prob(a, b, ms.mapped), certain});
+  }
   view.known_space = known.total().Polygons();
   view.known_set = std::make_shared<const PolygonSet>(known.total());
   view.frontiers = frontiers.Extract(core, ms, view.known_space);
@@ -172,6 +177,24 @@ Mapper::Mapper(const MapperOptions& options) {
 Mapper::~Mapper() = default;
 
 void Mapper::AddObservation(const core::Observation& z) { impl_->Add(z); }
+
+bool Mapper::AddContact(const core::Contact& c) {
+  const double length = core::Distance(c.at, c.toward);
+  if (!(c.reach > 0) || !(length > 1e-9)) return false;
+  const core::Segment2 way{c.at, c.at + (c.toward - c.at) * (c.reach / length)};
+  const internal::MapState& ms = impl_->ViewMap();
+  double nearest = std::numeric_limits<double>::infinity();
+  uint64_t key = 0;
+  for (const auto& [a, b] : ms.walls) {
+    const core::Segment2 wall{impl_->core.Pos(a), impl_->core.Pos(b)};
+    if (!core::SegmentsIntersect(way, wall)) continue;
+    const double d = core::DistanceToSegment(c.at, wall);
+    if (d < nearest) nearest = d, key = internal::WallKey(a, b);
+  }
+  if (!std::isfinite(nearest)) return false;
+  impl_->confirmed.insert(key);
+  return true;
+}
 
 double Mapper::SampleMostLikelyMap(core::Rng& rng, int samples) {
   const double gain = internal::SampleMostLikelyMap(&impl_->core, rng,

@@ -94,6 +94,9 @@ struct MapWall {
   int a = 0, b = 0;          // vertex ids
   core::Vec2 pa, pb;
   double probability = 0.0;  // averaged edge likelihood
+  // Known for certain to be there (the region's edge, a wall the planner adds, a true map): a way never
+  // crosses it.  The map's own walls are not (planning::PlannerOptions::wall_crossing_cost prices them).
+  bool certain = false;
 };
 
 // A piece of the known-space boundary that is not a map wall: where unknown space begins.
@@ -131,6 +134,11 @@ class Mapper {
   ~Mapper();
   Mapper(const Mapper&) = delete;
   Mapper& operator=(const Mapper&) = delete;
+
+  // Contact evidence: the map wall that crosses the way from contact.at toward contact.toward within
+  // contact.reach (the one nearest to 'at') is real -- from now on, whenever it is in the map, its view says so
+  // (probability 1, MapWall::certain).  Returns false (and changes nothing) where no map wall crosses the way.
+  bool AddContact(const core::Contact& contact);
 
   // Associates the detections, updates vertices and walls.  Observations of several agents may be added in
   // turn.  Throws core::DataError (and leaves the map unchanged) for NaN or infinite values, a covariance

@@ -22,10 +22,9 @@ std::vector<size_t> TourMembers(const std::vector<Path>& from_agent) {
 }
 
 // The ordering problem whose expected cost is the tour's length: every frontier fails (Ps 0) at no cost of
-// its own, so only the legs between frontiers count, and a leg leaving a frontier adds half its exploration
-// cost (the walk back out of what lies past it, which the tour's last frontier does not need).
+// its own, so only the legs between frontiers count.
 OrderingProblem TourProblem(const VisibilityGraph& graph, const std::vector<core::Vec2>& points,
-                            const std::vector<double>& from_agent, const std::vector<double>& exploration) {
+                            const std::vector<double>& from_agent) {
   OrderingProblem p;
   const size_t n = points.size();
   p.properties.assign(n, SubgoalProperties{0.0, 0.0, 0.0});
@@ -38,8 +37,8 @@ OrderingProblem TourProblem(const VisibilityGraph& graph, const std::vector<core
     for (size_t j = i + 1; j < n; ++j) {
       const Path& leg = legs[j - i - 1];
       const double cost = leg ? leg.cost : std::numeric_limits<double>::infinity();
-      p.between[i][j] = cost + 0.5 * exploration[i];
-      p.between[j][i] = cost + 0.5 * exploration[j];
+      p.between[i][j] = cost;
+      p.between[j][i] = cost;
     }
   }
   return p;
@@ -58,13 +57,12 @@ FrontierChoice ChooseTourFrontier(const VisibilityGraph& graph, const std::vecto
   const std::vector<size_t> members = TourMembers(paths);
   if (members.empty()) return choice;
   std::vector<core::Vec2> points;
-  std::vector<double> from_agent, exploration;
+  std::vector<double> from_agent;
   for (size_t k : members) {
     points.push_back(goals[k]);
     from_agent.push_back(paths[k].cost);
-    exploration.push_back(targets[k].exploration);
   }
-  const Ordering tour = BestOrdering(TourProblem(graph, points, from_agent, exploration));
+  const Ordering tour = BestOrdering(TourProblem(graph, points, from_agent));
   // Legs between reachable targets always exist (through the agent); without an order, go to the nearest.
   size_t first = members[0];
   for (size_t k : members) first = paths[k].cost < paths[first].cost ? k : first;

@@ -3,10 +3,7 @@
 // agent and visits every reachable frontier target once (path costs on the visibility graph).  Nearest-frontier
 // search (the paper's) leaves a frontier behind whenever another is a little closer and walks back for it at
 // the end; the tour weighs where each choice leaves the agent for the rest.  The order is solved exactly by the
-// subgoal-ordering dynamic programme (every frontier "fails", so its expected cost is the tour length).  A
-// target's estimated exploration cost (FrontierTarget::exploration, a round trip past it) counts half on
-// the leg leaving it: what lies past the last frontier is explored without walking back, so the frontier
-// with the most behind it goes last and a small room by the way is not left for the end.
+// subgoal-ordering dynamic programme (every frontier "fails", so its expected cost is the tour length).
 #include <vector>
 
 #include "core/geometry.h"

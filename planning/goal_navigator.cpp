@@ -52,7 +52,7 @@ mapping::MapView TrueMap(const core::World& world) {
     for (const Vec2& p : *ring) view.vertices.push_back({id++, p, {}, 0});
     for (int i = first; i < id; ++i) {
       const int j = i + 1 < id ? i + 1 : first;
-      view.walls.push_back({i, j, view.vertices[i].position, view.vertices[j].position, 1.0});
+      view.walls.push_back({i, j, view.vertices[i].position, view.vertices[j].position, 1.0, /*certain=*/true});
     }
   }
   return view;
@@ -249,8 +249,8 @@ void GoalNavigator::Scan(const NavigatorInput& in, const Vec2& at) {
   ++counts_.scan_steps;
 }
 
-std::optional<Vec2> GoalNavigator::AfterStep(const NavigatorInput& in, int agent, const MotionOutcome& step,
-                                             core::Rng& rng) {
+StepResponse GoalNavigator::AfterStep(const NavigatorInput& in, int agent, const MotionOutcome& step,
+                                      core::Rng& rng) {
   const bool has_path = choice_.status == PlanStatus::kFound && choice_.path.points.size() > 1;
   const std::vector<Vec2>& trail = (*in.trails)[0];
   const Vec2 at = step.pose.position();
@@ -262,8 +262,16 @@ std::optional<Vec2> GoalNavigator::AfterStep(const NavigatorInput& in, int agent
                     HeldInPlace(trail, at, monitor.pacing_steps(), 2 * in.step_length) || repeated;
   const bool stuck = (has_path && held) || monitor.NoHeadway(trail, has_path, !has_path, at, step.distance);
   std::optional<MotionBlocks>& blocks = parts_->blocks;
-  if (blocks && has_path && !trail.empty()) blocks->Record(agent, choice_.path.points, trail.back(), at);
-  if (!monitor.Record(agent, stuck)) return std::nullopt;
+  StepResponse response;
+  // Contact: pressed toward the way's next point without getting on (reach: two steps ahead).
+  if (has_path && !trail.empty())
+    response.contact = core::Contact{trail.back(), choice_.path.points[1], 2 * in.step_length};
+  const bool blocked_here = blocks && has_path && !trail.empty() &&
+                            blocks->Record(agent, choice_.path.points, trail.back(), at);
+  if (!monitor.Record(agent, stuck)) {
+    if (!blocked_here) response.contact.reset();
+    return response;
+  }
   const int blocked =
       parts_->true_map ? -1 : NearestFrontier(in.view->frontiers, at, setup_.search.give_up_distance);
   if (blocked >= 0)
@@ -272,7 +280,8 @@ std::optional<Vec2> GoalNavigator::AfterStep(const NavigatorInput& in, int agent
     blocks->Block(trail.back(), choice_.path.points[1]);
   parts_->recovery.Failed();
   ++counts_.nudges;
-  return RandomNudge(in.step_length, rng);
+  response.nudge = RandomNudge(in.step_length, rng);
+  return response;
 }
 
 }  // namespace toponav::planning

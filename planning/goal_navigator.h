@@ -13,6 +13,8 @@
 // the recovery (planning/internal/doorway_recovery.h).  After the agent steps, an agent that made no headway
 // (no motion, pacing, held in place, the third lap of a loop) is due for a nudge once search.stuck_steps such
 // steps added up: the frontier it stands at is blocked where it stood, or a motion block goes across its way.
+// Where it made no headway along its way (a motion block's count, or a nudge), the map wall that way crosses
+// close ahead is reported as contact evidence: the map makes it certain, and no way crosses it again.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -73,8 +75,7 @@ class GoalNavigator : public Navigator {
   ~GoalNavigator() override;
 
   bool Plan(const NavigatorInput& input, std::vector<std::vector<core::Vec2>>* ways) override;
-  std::optional<core::Vec2> AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step,
-                                      core::Rng& rng) override;
+  StepResponse AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step, core::Rng& rng) override;
   std::string end_reason() const override { return end_reason_; }
 
   // Hooks the harness may set: every step before the planner, with the frontier targets on offer (training

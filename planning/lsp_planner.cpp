@@ -55,6 +55,9 @@ LspPlanner::LspPlanner(std::shared_ptr<SubgoalEstimator> estimator, const LspOpt
     : estimator_(std::move(estimator)), o_(o), planning_(planning), region_(region), name_(std::move(name)) {
   o.Validate();  // the ranges of max_frontiers, cell and piece_length
   TOPONAV_CHECK(estimator_, "an LSP planner without an estimator");
+  // The way through the subgoal never crosses a map wall: where the walls close it, there is none (and the way to
+  // the subgoal's target, or the optimistic way on the problem's graph, is taken instead).
+  planning_.wall_crossing_cost = 0.0;
 }
 
 std::vector<FrontierChoice> LspPlanner::Plan(const PlanningProblem& p) {

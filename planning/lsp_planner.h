@@ -76,7 +76,7 @@ class LspPlanner : public Planner {
 
   std::shared_ptr<SubgoalEstimator> estimator_;
   LspOptions o_;
-  PlannerOptions planning_;
+  PlannerOptions planning_;  // for the way through the subgoal: map walls never crossed
   std::optional<core::Aabb2> region_;
   std::string name_;
   LspDecision decision_;

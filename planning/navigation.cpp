@@ -22,6 +22,7 @@ const core::OptionFields<PlannerOptions>& PlannerOptions::Fields() {
       {"frontier_setback", &O::frontier_setback, 0.01, 100.0},
       {"frontier_row_gap", &O::frontier_row_gap, 0.0, 1000.0},
       {"frontier_row_tolerance", &O::frontier_row_tolerance, 0.01, 100.0},
+      {"wall_crossing_cost", &O::wall_crossing_cost, 0.0, 100000.0},
   };
   return fields;
 }
@@ -39,6 +40,15 @@ bool InKnown(const mapping::MapView& view, const Vec2& p) {
 }
 
 namespace {
+
+// A way may cross a map wall the map is not certain of at 'cost' times its odds, the wall's probability
+// taken at most kMaxWallProbability (only what is certain is never crossed); 'cost' 0: never.
+constexpr double kMaxWallProbability = 0.99;
+double CrossingPrice(const mapping::MapWall& w, double cost) {
+  if (w.certain || cost <= 0) return std::numeric_limits<double>::infinity();
+  const double p = std::clamp(w.probability, 0.0, kMaxWallProbability);
+  return cost * p / (1.0 - p);
+}
 
 // Exploration also needs to turn at corners of known space that are not map vertices (where it meets unknown
 // space): a node inside each such corner, on the inward bisector, 'r' in, at least 0.9 r from every wall.
@@ -74,7 +84,11 @@ void AddKnownSpaceCorners(const mapping::MapView& view, const std::vector<core::
 VisibilityGraph::VisibilityGraph(const mapping::MapView& view, const PlannerOptions& options, bool require_known)
     : view_(&view), options_(options), require_known_(require_known) {
   options.Validate();
-  for (const auto& w : view.walls) walls_.push_back({w.pa, w.pb});
+  for (const auto& w : view.walls) {
+    walls_.push_back({w.pa, w.pb});
+    prices_.push_back(CrossingPrice(w, options.wall_crossing_cost));
+    min_price_ = std::min(min_price_, prices_.back());
+  }
   // Nodes around each map vertex, inflation_radius away: one per free angular sector between its walls (on
   // the bisector; wide sectors get one node per 60 degrees), six around a vertex without walls.
   std::map<int, std::vector<double>> wall_dirs;
@@ -111,8 +125,15 @@ VisibilityGraph::VisibilityGraph(const mapping::MapView& view, const PlannerOpti
   if (require_known_) AddKnownSpaceCorners(view, walls_, r, &nodes_);
   graph_ = Graph(int(nodes_.size()));
   for (size_t i = 0; i < nodes_.size(); ++i)
-    for (size_t j = i + 1; j < nodes_.size(); ++j)
-      if (Clear(nodes_[i], nodes_[j])) graph_.AddEdge(int(i), int(j), core::Distance(nodes_[i], nodes_[j]));
+    for (size_t j = i + 1; j < nodes_.size(); ++j) LinkIfPassable(&graph_, nodes_, int(i), int(j), false, false, false);
+}
+
+bool VisibilityGraph::LinkIfPassable(Graph* g, const std::vector<Vec2>& pts, int i, int j, bool relax_i,
+                                     bool relax_j, bool crossing) const {
+  const double price = Crossing(pts[size_t(i)], pts[size_t(j)], relax_i, relax_j);
+  if (price == std::numeric_limits<double>::infinity() || (price > 0 && !crossing)) return false;
+  g->AddEdge(i, j, core::Distance(pts[size_t(i)], pts[size_t(j)]) + price);
+  return true;
 }
 
 int VisibilityGraph::num_edges() const {
@@ -124,6 +145,11 @@ int VisibilityGraph::num_edges() const {
 bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b) const { return Clear(a, b, false, false); }
 
 bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b, bool relax_a, bool relax_b) const {
+  return Crossing(a, b, relax_a, relax_b) == 0.0;
+}
+
+double VisibilityGraph::Crossing(const Vec2& a, const Vec2& b, bool relax_a, bool relax_b) const {
+  constexpr double kBlocked = std::numeric_limits<double>::infinity();
   const core::Segment2 s{a, b};
   // A relaxed end (an agent or a target that may stand close to a wall) only needs the clearance from
   // 'clearance' along the segment on; the segment may still not touch a wall anywhere.
@@ -139,12 +165,19 @@ bool VisibilityGraph::Clear(const Vec2& a, const Vec2& b, bool relax_a, bool rel
   // nor cross the whole segment (it reaches at most 'clearance' beyond the inner one).
   const double c = options_.clearance;
   const core::Aabb2 box = core::SegmentBox(inner.a, inner.b);
-  for (const auto& w : walls_) {
+  double price = 0.0;
+  for (size_t i = 0; i < walls_.size(); ++i) {
+    const core::Segment2& w = walls_[i];
     if (!core::BoxHitsSegment(box, w.a, w.b, c)) continue;
-    if (core::SegmentDistance(inner, w) < c) return false;
-    if ((relax_a || relax_b) && core::SegmentsIntersect(s, w)) return false;
+    // A wall the segment crosses and may cross costs its price; any other keeps the clearance.
+    if (prices_[i] < kBlocked && core::SegmentsIntersect(s, w)) {
+      price += prices_[i];
+      continue;
+    }
+    if (core::SegmentDistance(inner, w) < c) return kBlocked;
+    if ((relax_a || relax_b) && core::SegmentsIntersect(s, w)) return kBlocked;
   }
-  return StaysKnown(a, b);
+  return StaysKnown(a, b) ? price : kBlocked;
 }
 
 bool VisibilityGraph::ClearLoose(const Vec2& a, const Vec2& b) const {
@@ -180,8 +213,29 @@ bool VisibilityGraph::StaysKnown(const Vec2& a, const Vec2& b) const {
 }
 
 std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vector<Vec2>& goals) const {
+  std::vector<Path> out = Query(graph_, start, goals, false);
+  // A way that crosses a wall costs at least the least price: a wall-free way no dearer is the best.
+  std::vector<size_t> dear;
+  for (size_t k = 0; k < goals.size(); ++k)
+    if (!out[k] || out[k].cost > min_price_) dear.push_back(k);
+  if (dear.empty() || min_price_ == std::numeric_limits<double>::infinity()) return out;
+  if (!crossing_graph_) {
+    crossing_graph_ = graph_;
+    for (size_t i = 0; i < nodes_.size(); ++i)
+      for (size_t j = i + 1; j < nodes_.size(); ++j)
+        if (!Clear(nodes_[i], nodes_[j])) LinkIfPassable(&*crossing_graph_, nodes_, int(i), int(j), false, false, true);
+  }
+  std::vector<Vec2> dear_goals;
+  for (size_t k : dear) dear_goals.push_back(goals[k]);
+  const std::vector<Path> crossing = Query(*crossing_graph_, start, dear_goals, true);
+  for (size_t i = 0; i < dear.size(); ++i) out[dear[i]] = crossing[i];
+  return out;
+}
+
+std::vector<Path> VisibilityGraph::Query(const Graph& base, const Vec2& start, const std::vector<Vec2>& goals,
+                                         bool crossing) const {
   // Query graph: the built graph plus the start and the goals.
-  Graph g = graph_;
+  Graph g = base;
   const int n = int(nodes_.size());
   const int s = n;
   g.adjacency.resize(size_t(n + 1 + int(goals.size())));
@@ -191,22 +245,14 @@ std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vect
   // An end that a map wall has come too close to (a wall estimate that moved, an agent pushed against a
   // wall) still connects by segments that cross no wall, so an agent can always get away from a wall.
   bool start_linked = false;
-  for (int i = 0; i < n; ++i)
-    if (Clear(start, pts[size_t(i)], true, false)) {
-      g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
-      start_linked = true;
-    }
+  for (int i = 0; i < n; ++i) start_linked = LinkIfPassable(&g, pts, s, i, true, false, crossing) || start_linked;
   if (!start_linked)
     for (int i = 0; i < n; ++i)
       if (ClearLoose(start, pts[size_t(i)])) g.AddEdge(s, i, core::Distance(start, pts[size_t(i)]));
   for (size_t k = 0; k < goals.size(); ++k) {
     const int gi = n + 1 + int(k);
     bool linked = false;
-    for (int i = 0; i <= n; ++i)
-      if (Clear(goals[k], pts[size_t(i)], true, i == n)) {
-        g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
-        linked = true;
-      }
+    for (int i = 0; i <= n; ++i) linked = LinkIfPassable(&g, pts, gi, i, true, i == n, crossing) || linked;
     if (!linked)
       for (int i = 0; i <= n; ++i)
         if (ClearLoose(goals[k], pts[size_t(i)])) g.AddEdge(gi, i, core::Distance(goals[k], pts[size_t(i)]));
@@ -355,8 +401,10 @@ std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const 
 }
 
 void AddWalls(mapping::MapView* view, const std::vector<Vec2>& polyline, bool closed) {
-  for (size_t i = 1; i < polyline.size(); ++i) view->walls.push_back({-1, -1, polyline[i - 1], polyline[i], 1.0});
-  if (closed && polyline.size() > 2) view->walls.push_back({-1, -1, polyline.back(), polyline.front(), 1.0});
+  for (size_t i = 1; i < polyline.size(); ++i)
+    view->walls.push_back({-1, -1, polyline[i - 1], polyline[i], 1.0, /*certain=*/true});
+  if (closed && polyline.size() > 2)
+    view->walls.push_back({-1, -1, polyline.back(), polyline.front(), 1.0, /*certain=*/true});
 }
 
 void AddFreeStandingWall(mapping::MapView* view, const core::Segment2& wall) { AddFreeStandingWalls(view, {wall}); }
@@ -368,7 +416,7 @@ void AddFreeStandingWalls(mapping::MapView* view, const std::vector<core::Segmen
   for (const auto& wall : walls) {
     view->vertices.push_back({id, wall.a, {}, 0});
     view->vertices.push_back({id + 1, wall.b, {}, 0});
-    view->walls.push_back({id, id + 1, wall.a, wall.b, 1.0});
+    view->walls.push_back({id, id + 1, wall.a, wall.b, 1.0, /*certain=*/true});
     id += 2;
   }
 }

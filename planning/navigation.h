@@ -2,6 +2,8 @@
 // Planning on the map view: a visibility graph over inflated map vertices, frontier targets, single-agent
 // nearest-frontier search, a multi-agent assignment of distinct frontiers, and H-signatures (homology
 // classes of paths).  Planners read mapping::MapView only.
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include "core/geometry.h"
@@ -27,6 +29,10 @@ struct PlannerOptions {
   // 0: off.
   double frontier_row_gap = 14.0;
   double frontier_row_tolerance = 1.0;
+  // A way may cross a map wall the map is not certain of (mapping::MapWall::certain) at this price times the
+  // wall's odds p / (1 - p), p its probability taken at most 0.99 (world units of path): a wall the map is
+  // unsure of is a long detour, not an end.  0: map walls are never crossed.
+  double wall_crossing_cost = 0.0;
   static const core::OptionFields<PlannerOptions>& Fields();  // YAML keys (under planning:) and their ranges
   void Validate() const;           // throws core::ConfigError ("planning.inflation_radius", ...)
 };
@@ -53,21 +59,35 @@ class VisibilityGraph {
   int num_nodes() const { return int(nodes_.size()); }
   int num_edges() const;
   const std::vector<core::Vec2>& nodes() const { return nodes_; }
-  // True if the straight segment is traversable under this graph's rules; a relaxed end may lie closer than
-  // the clearance to a wall (agents and targets do), the rest of the segment may not.
+  // True if the straight segment is traversable under this graph's rules without crossing a wall; a relaxed
+  // end may lie closer than the clearance to a wall (agents and targets do), the rest of the segment may not.
   bool Clear(const core::Vec2& a, const core::Vec2& b) const;
   bool Clear(const core::Vec2& a, const core::Vec2& b, bool relax_a, bool relax_b) const;
+  // The price of the walls the segment crosses (PlannerOptions::wall_crossing_cost; 0: it crosses none), or
+  // infinity where it may not pass (too close to a wall, or across one that is certain).
+  double Crossing(const core::Vec2& a, const core::Vec2& b, bool relax_a, bool relax_b) const;
   // Crosses no wall (no clearance asked) and, if known space is required, stays in it.
   bool ClearLoose(const core::Vec2& a, const core::Vec2& b) const;
   bool StaysKnown(const core::Vec2& a, const core::Vec2& b) const;
 
  private:
+  // Adds the edge i-j to 'g' at its length plus its crossing price, if it may pass (and, unless 'crossing', crosses
+  // no wall); true if it did.
+  bool LinkIfPassable(Graph* g, const std::vector<core::Vec2>& pts, int i, int j, bool relax_i, bool relax_j,
+                      bool crossing) const;
+  // Shortest paths on 'base' with the start and goals linked in (across walls if 'crossing').
+  std::vector<Path> Query(const Graph& base, const core::Vec2& start, const std::vector<core::Vec2>& goals,
+                          bool crossing) const;
+
   const mapping::MapView* view_;
   PlannerOptions options_;
   bool require_known_;
   std::vector<core::Segment2> walls_;
+  std::vector<double> prices_;  // per wall: its crossing price (infinity: never crossed)
+  double min_price_ = std::numeric_limits<double>::infinity();  // the least of them
   std::vector<core::Vec2> nodes_;
-  Graph graph_;
+  Graph graph_;                                  // edges that cross no wall
+  mutable std::optional<Graph> crossing_graph_;  // and those that do, built when a query first needs them
 };
 
 // True if p lies in the view's known space (its double-precision polygons, as the graph's rules use them).
@@ -81,8 +101,6 @@ struct FrontierTarget {
   double length = 0.0;
   core::Vec2 outward{1, 0};  // unit normal of the frontier at its midpoint, pointing into unknown space
   double depth = 0.0;        // how far 'point' lies back from the frontier, against 'outward'
-  double exploration = 0.0;  // estimated cost of exploring past it and coming back (path units; 0: none),
-                             // planning/frontier_exploration.h
 };
 std::vector<FrontierTarget> FrontierTargets(const mapping::MapView& view, const PlannerOptions& options);
 // True if 'frontier' is straight with no stretch longer than PlannerOptions::frontier_row_gap between detected

@@ -34,6 +34,13 @@ struct NavigatorInput {
   const std::vector<std::vector<core::Vec2>>* trails = nullptr;  // each agent's positions so far
 };
 
+// What a navigator makes of an agent's step: a displacement the harness nudges the agent by, and contact
+// evidence the harness gives the map (mapping::Mapper::AddContact).
+struct StepResponse {
+  std::optional<core::Vec2> nudge;
+  std::optional<core::Contact> contact;
+};
+
 // How far (world units of path) an agent can still walk before the step cap while keeping 'reserve_steps'
 // steps in hand: (max_steps - step - reserve_steps) * step_length, at least 0; infinity without a cap.
 double PathBudget(const NavigatorInput& input, int reserve_steps);
@@ -48,11 +55,10 @@ class Navigator {
   // The waypoints each agent follows this step (after its position; empty: it stays), or false: the task ended
   // now, before the agents move (end_reason() says why).
   virtual bool Plan(const NavigatorInput& input, std::vector<std::vector<core::Vec2>>* ways) = 0;
-  // After agent 'agent' stepped (before the next agent does): a displacement the harness nudges it by (drawn
-  // from 'rng'), or none.
-  virtual std::optional<core::Vec2> AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step,
-                                              core::Rng& rng) {
-    return std::nullopt;
+  // After agent 'agent' stepped (before the next agent does): a nudge (drawn from 'rng') and contact evidence,
+  // or neither.
+  virtual StepResponse AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step, core::Rng& rng) {
+    return {};
   }
   // Why the task ended ("step_cap" while it has not: the harness's cap ends it then).
   virtual std::string end_reason() const { return "step_cap"; }

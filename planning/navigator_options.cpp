@@ -29,15 +29,7 @@ const core::OptionFields<SearchOptions>& SearchOptions::Fields() {
   return fields;
 }
 
-void SearchOptions::Validate() const {
-  core::CheckRanges(*this, Fields(), "search.");
-  if (exploration_estimate != "none" && exploration_estimate != "learned" && exploration_estimate != "oracle")
-    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate,
-                            "expected none, learned or oracle");
-  if (exploration_estimate != "none" && !tour)
-    throw core::ConfigError("", "search.exploration_estimate", exploration_estimate,
-                            "only the tour uses it: set search.tour");
-}
+void SearchOptions::Validate() const { core::CheckRanges(*this, Fields(), "search."); }
 
 const core::OptionFields<NavigationOptions>& NavigationOptions::Fields() {
   using O = NavigationOptions;

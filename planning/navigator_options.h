@@ -49,12 +49,6 @@ struct SearchOptions {
                                   // (world units) short of a side of the world's bounds is not over: agents
                                   // look for the map wall that seals the rest off (planning::UnreachedSide,
                                   // planning::SuspectInspector) while there are suspects left; 0: off
-  // What the tour (search.tour, one agent) knows of the space past each frontier
-  // (planning/frontier_exploration.h): "none" (every frontier alike), "learned" (the exploration cost a
-  // subgoal network -- sensor.subgoal_model, or the sensor's model itself, trained with train.subgoal on
-  // searches -- gives the cells each frontier covers, averaged over the views that saw them) or "oracle"
-  // (the true world's: an upper bound for an estimate, since it looks at the world)
-  std::string exploration_estimate = "none";
   static const core::OptionFields<SearchOptions>& Fields();  // YAML keys (under search:) and their ranges
   void Validate() const;          // throws core::ConfigError ("search.give_up_steps", ...)
 };

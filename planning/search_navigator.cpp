@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "planning/frontier_exploration.h"
 #include "planning/sealed_region.h"
 
 namespace toponav::planning {
@@ -27,22 +26,10 @@ SearchNavigator::SearchNavigator(const SearchNavigatorSetup& s)
       dwell_(s.search.give_up_steps, s.search.give_up_distance),
       commitment_(s.num_agents, s.search.switch_ratio, s.search.switch_margin),
       stuck_(s.num_agents, s.search.stuck_steps, s.step_length),
-      model_(s.model),
-      cell_(s.lsp.cell),
       bounds_(s.bounds) {
   if (s.search.block_when_stuck)
     blocks_.emplace(s.num_agents, s.search.stuck_steps, s.step_length, 2 * s.step_length, s.planning.clearance + 0.5);
   if (!s.closed) region_ = s.bounds;
-  const bool oracle = s.search.exploration_estimate == "oracle";
-  if (oracle != (s.truth != nullptr))
-    throw core::ConfigError("<navigator>", "search.exploration_estimate", s.search.exploration_estimate,
-                            oracle ? "oracle needs the true world as its privileged input, and none was given"
-                                   : "takes no privileged input (only oracle does)");
-  if (s.num_agents == 1 && oracle) exploration_ = CreateOracleEstimator(*s.truth, s.lsp.cell, s.lsp.clearance);
-  if (s.num_agents == 1 && s.search.exploration_estimate == "learned") {
-    cells_ = std::make_shared<CellAveragingEstimator>();
-    exploration_ = cells_;
-  }
   VertexInspectionOptions inspection;
   inspection.max_bend = s.search.inspect_bend;
   inspection.standoff = s.search.inspect_standoff;
@@ -72,14 +59,6 @@ bool SearchNavigator::ChooseSealedSuspects(const mapping::MapView& view, const V
   choices_ = std::move(choices);
   sealed_choices_ += int(agents.size());
   return true;
-}
-
-void SearchNavigator::ObserveCells(const NavigatorInput& input) {
-  const size_t before = cells_->observations();
-  for (const auto& z : *input.observations) cells_->Observe(z);
-  if (cells_->observations() == before && !input.observations->empty())
-    throw core::DataError(model_, "search.exploration_estimate learned: the model gives no subgoal outputs "
-                                  "(not trained with train.subgoal)");
 }
 
 std::vector<FrontierTarget> SearchNavigator::Targets(const mapping::MapView& view) {
@@ -157,8 +136,6 @@ bool SearchNavigator::Plan(const NavigatorInput& input, std::vector<std::vector<
   const VisibilityGraph graph(planned, planning_, false);
   PlanningProblem problem{&planned, &graph, &targets_, {}, std::nullopt};
   for (const auto& p : input.poses) problem.agents.push_back(p.position());
-  if (cells_) ObserveCells(input);
-  if (exploration_) EstimateExploration(view, problem.agents[0], cell_, bounds_, *exploration_, &targets_);
   if (targets_.empty() && inspector_) {
     // A lookout the agents cannot reach and look from within the steps left is not worth starting for.
     targets_ = inspector_->Targets(view, graph, problem.agents, PathBudget(input, search_.give_up_steps));
@@ -178,8 +155,8 @@ bool SearchNavigator::Plan(const NavigatorInput& input, std::vector<std::vector<
   return true;
 }
 
-std::optional<Vec2> SearchNavigator::AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step,
-                                               core::Rng& rng) {
+StepResponse SearchNavigator::AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step,
+                                        core::Rng& rng) {
   const FrontierChoice& c = choices_[size_t(agent)];
   const bool found = c.status == PlanStatus::kFound;
   const bool has_path = found && c.path.points.size() > 1;
@@ -196,10 +173,10 @@ std::optional<Vec2> SearchNavigator::AfterStep(const NavigatorInput& input, int 
     inspector_->GiveUp(c.frontier_id);
   else if (stuck && target && dwell_.Count(c.frontier_id))
     given_up_.GiveUp(c.frontier_id, input.view->frontiers);
-  if (!stuck_.Record(agent, stuck)) return std::nullopt;
+  if (!stuck_.Record(agent, stuck)) return {};
   // The paper's failures were agents stuck in place feeding identical images: perturb and re-observe.
   ++nudges_;
-  return RandomNudge(input.step_length, rng);
+  return {RandomNudge(input.step_length, rng), std::nullopt};
 }
 
 }  // namespace toponav::planning

@@ -15,8 +15,6 @@
 // within the steps left.  With search.sealed_reach, in closed worlds a search whose known space stops short of a
 // side of the world's bounds goes on: agents look at the map walls that may seal the rest off
 // (UnreachedSide, SuspectInspector) until none is left to look at.
-// With search.exploration_estimate, one agent's tour knows what lies past each frontier
-// (planning/frontier_exploration.h).
 #include <functional>
 #include <memory>
 #include <optional>
@@ -24,10 +22,8 @@
 #include <vector>
 
 #include "core/world.h"
-#include "planning/cell_estimator.h"
 #include "planning/dropped_walls.h"
 #include "planning/given_up_frontiers.h"
-#include "planning/lsp_planner.h"
 #include "planning/map_suspects.h"
 #include "planning/motion_blocks.h"
 #include "planning/navigator.h"
@@ -46,29 +42,20 @@ struct SearchNavigatorSetup {
   SearchOptions search;
   NavigationOptions navigation;  // inspect_reach (search.sealed_reach)
   PlannerOptions planning;
-  LspOptions lsp;                // cell and clearance (search.exploration_estimate)
-  std::string model;             // the sensor's model file, named in errors (exploration_estimate learned)
-  // Privileged information: the true world, for search.exploration_estimate oracle only (an upper bound for
-  // an estimate); the harness sets it, and nothing else reads it.
-  const core::World* truth = nullptr;
 };
 
 class SearchNavigator : public Navigator {
  public:
-  // Throws core::ConfigError where search.exploration_estimate is oracle and 'truth' is not set.
   explicit SearchNavigator(const SearchNavigatorSetup& setup);
 
   bool Plan(const NavigatorInput& input, std::vector<std::vector<core::Vec2>>* ways) override;
-  std::optional<core::Vec2> AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step,
-                                      core::Rng& rng) override;
+  StepResponse AfterStep(const NavigatorInput& input, int agent, const MotionOutcome& step, core::Rng& rng) override;
   std::string end_reason() const override { return end_reason_; }  // "explored", "unreachable", "step_cap"
 
   // Called every step before agents move with the loop's state, the frontier targets on offer and each agent's
   // choice (traces, training data).
   std::function<void(const NavigatorInput&, const std::vector<FrontierTarget>&, const std::vector<FrontierChoice>&)>
       on_plan;
-  // Whether the sensor must tell a goal-conditioned network the goal is at the agent (the learned estimate).
-  bool wants_goal_at_agent() const { return cells_ != nullptr; }
 
   bool explored() const { return explored_; }
   int nudges() const { return nudges_; }
@@ -84,7 +71,6 @@ class SearchNavigator : public Navigator {
   std::vector<FrontierTarget> Targets(const mapping::MapView& view);
   bool Ended(const std::vector<FrontierTarget>& targets, const mapping::MapView& view);
   void CountDwelling(const NavigatorInput& input, const std::vector<core::Vec2>& agents);
-  void ObserveCells(const NavigatorInput& input);  // "learned": this step's network outputs to the estimator
   // search.sealed_reach: each agent's way to a suspect wall while known space misses a side of the bounds;
   // false (choices_ untouched) when it reaches them all or no suspect is left.
   bool ChooseSealedSuspects(const mapping::MapView& view, const VisibilityGraph& graph,
@@ -103,11 +89,7 @@ class SearchNavigator : public Navigator {
   std::optional<VertexInspector> inspector_;  // search.inspect_bend or inspect_unwalled only
   std::optional<SuspectInspector> sealed_;     // search.sealed_reach, closed worlds only
   int sealed_choices_ = 0;                               // agent-steps headed for a suspect wall
-  std::shared_ptr<SubgoalEstimator> exploration_;  // search.exploration_estimate, one agent only
-  std::shared_ptr<CellAveragingEstimator> cells_;  // "learned": exploration_, fed the observations
-  std::string model_;                                         // its sensor's model file (errors)
-  double cell_ = 1.0;                                         // its raster's cell (lsp.cell)
-  core::Aabb2 bounds_;                                        // the world's
+  core::Aabb2 bounds_;  // the world's
   // This step's targets (pushed through where agents dwelt, and as they were before) and choices.
   std::vector<FrontierTarget> targets_, original_;
   std::vector<FrontierChoice> choices_;

@@ -193,4 +193,13 @@ SubgoalLabelGrid RasterizeSubgoalLabels(const SubgoalGrid& grid, const std::vect
   return out;
 }
 
+OrderingProblem ProblemWithoutDistances(size_t frontiers) {
+  OrderingProblem none;
+  none.properties.resize(frontiers);
+  none.robot_cost.assign(frontiers, 0.0);
+  none.goal_cost.assign(frontiers, 0.0);
+  none.between.assign(frontiers, std::vector<double>(frontiers, 0.0));
+  return none;
+}
+
 }  // namespace toponav::planning

@@ -75,6 +75,11 @@ class TrueFreeSpace {
   std::vector<char> free_;
 };
 
+// The ordering problem of 'frontiers' frontiers with no distance tables (all zero): enough when the goal is
+// at the agent (a search's training data), since no frontier leads to it -- the true properties read how many
+// frontiers there are, and costs toward a goal only where one does.  It spares a Dijkstra per frontier.
+OrderingProblem ProblemWithoutDistances(size_t frontiers);
+
 // The true properties of each frontier of 'grid' (lsp.md §2.1): Ps = 1 when the goal can be reached through
 // the frontier's unseen-but-free side, with delta_success = (the true way: the agent to a frontier cell from
 // which unseen free space leads to the goal, then that way) - (d_robot + d_goal), so that d_robot + d_goal +

@@ -21,10 +21,10 @@ class WalkEast : public planning::Navigator {
     for (size_t a = 0; a < paths->size(); ++a) (*paths)[a] = {state.poses[a].position() + core::Vec2{10, 0}};
     return true;
   }
-  std::optional<core::Vec2> AfterStep(const planning::NavigatorInput& state, int agent,
-                                      const planning::MotionOutcome& step, core::Rng& rng) override {
+  planning::StepResponse AfterStep(const planning::NavigatorInput& state, int agent,
+                                   const planning::MotionOutcome& step, core::Rng& rng) override {
     ++after_steps;
-    return std::nullopt;
+    return {};
   }
   std::vector<int> observations, this_step;
   int after_steps = 0;

@@ -220,22 +220,6 @@ TEST(Config, SearchPolicyIsReadAndCheckedBySection) {
   }
 }
 
-TEST(Config, TheTourAloneTakesAnExplorationEstimateNamedByItsKind) {
-  const Config oracle = ParseConfig("search:\n  tour: true\n  exploration_estimate: oracle\n", "x.yaml");
-  EXPECT_EQ(oracle.search.exploration_estimate, "oracle");
-  EXPECT_EQ(ParseConfig("", "x.yaml").search.exploration_estimate, "none");
-  const auto kind = ErrorOf("search:\n  tour: true\n  exploration_estimate: guess\n");
-  EXPECT_EQ(kind.key(), "search.exploration_estimate");
-  EXPECT_EQ(kind.value(), "guess");
-  EXPECT_EQ(kind.file(), "configs/bad.yaml");
-  const auto no_sensor = ErrorOf("search:\n  tour: true\n  exploration_estimate: learned\n");
-  EXPECT_EQ(no_sensor.key(), "search.exploration_estimate") << "the learned estimate comes from the learned sensor";
-  EXPECT_NE(no_sensor.problem().find("sensor.kind"), std::string::npos);
-  const auto no_tour = ErrorOf("search:\n  exploration_estimate: oracle\n");
-  EXPECT_EQ(no_tour.key(), "search.exploration_estimate");
-  EXPECT_NE(no_tour.problem().find("search.tour"), std::string::npos);
-}
-
 TEST(Config, UnknownKeyNamesFileAndKeyPath) {
   const auto e = ErrorOf("worlds:\n  labyrinth:\n    num_romos: 5\n");
   EXPECT_EQ(e.file(), "configs/bad.yaml");

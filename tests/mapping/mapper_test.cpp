@@ -54,6 +54,31 @@ MapView DriveThroughSquare(const MapperOptions& o, uint64_t seed,
   return m.View();
 }
 
+TEST(Mapper, ContactEvidenceMakesTheWallAnAgentPressedAgainstCertain) {
+  Mapper m(SquareOptions());
+  core::Rng rng(1);
+  for (int i = 0; i < 30; ++i) m.AddObservation(SquareFromInside({5, 5, 0.1 * i}));
+  m.SampleMostLikelyMap(rng);
+  const MapView before = m.View();
+  ASSERT_EQ(before.walls.size(), 4u);
+  for (const auto& w : before.walls) EXPECT_FALSE(w.certain) << "sight alone never makes a wall certain";
+  EXPECT_FALSE(m.AddContact({{5, 5}, {6, 5}, 2.0})) << "no wall within reach toward (6, 5)";
+  EXPECT_FALSE(m.AddContact({{5, 5}, {5, 5}, 2.0})) << "no way: no contact";
+  // Pressed east from (9, 5): the wall x = 10 lies 1 ahead.
+  EXPECT_TRUE(m.AddContact({{9, 5}, {12, 5}, 2.0}));
+  const MapView after = m.View();
+  ASSERT_EQ(after.walls.size(), 4u);
+  int certain = 0;
+  for (const auto& w : after.walls) {
+    if (!w.certain) continue;
+    ++certain;
+    EXPECT_EQ(w.probability, 1.0);
+    EXPECT_NEAR(w.pa.x, 10.0, 0.5) << "the east wall";
+    EXPECT_NEAR(w.pb.x, 10.0, 0.5);
+  }
+  EXPECT_EQ(certain, 1);
+}
+
 MapView SquareWithFalseDetectionsOnAWall(double on_segment_tolerance) {
   MapperOptions o = SquareOptions();
   o.wall_on_segment_tolerance = on_segment_tolerance;

@@ -31,18 +31,6 @@ TEST(FrontierTour, TheAgentGoesFirstWhereTheShortestTourThroughAllFrontiersStart
   EXPECT_EQ(ChooseTourFrontier(g, RowOfFrontiers(), {62, 50}).frontier_id, 4);
 }
 
-TEST(FrontierTour, AFrontierWithMuchBehindItIsLeftForLast) {
-  const mapping::MapView view = OpenSquare();
-  const VisibilityGraph g(view, {}, false);
-  std::vector<FrontierTarget> targets = RowOfFrontiers();
-  // Leaving the western frontier costs half its 100: the east first (20, then 26 back) beats 6 + 50 + 26.
-  targets[0].exploration = 100.0;
-  EXPECT_EQ(ChooseTourFrontier(g, targets, {50, 50}).frontier_id, 2);
-  // A little behind it changes nothing: 6 + 5 + 26 < 46.
-  targets[0].exploration = 10.0;
-  EXPECT_EQ(ChooseTourFrontier(g, targets, {50, 50}).frontier_id, 1);
-}
-
 TEST(FrontierTour, NothingToExploreWithoutTargetsAndNoPathWhenNoneIsReachable) {
   mapping::MapView view = OpenSquare();
   const VisibilityGraph open(view, {}, false);

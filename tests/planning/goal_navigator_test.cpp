@@ -136,5 +136,61 @@ TEST(GoalNavigator, AHeldAgentPlansWithTheRangeRingsScansAndWithoutARingTheOptio
   }
 }
 
+// A corridor 100 long and 14 wide, all of it known, its side walls in the map (p 0.95) and a false wall across
+// it at x = 50 (p 0.7): the only way to the goal crosses the false wall.
+mapping::MapView CorridorWithAFalseWall() {
+  mapping::MapView v;
+  const std::vector<Vec2> corners{{0, 0}, {100, 0}, {100, 14}, {0, 14}, {50, 0}, {50, 14}};
+  for (size_t i = 0; i < corners.size(); ++i) v.vertices.push_back({int(i), corners[i], {}, 9});
+  for (auto [i, j] : {std::pair{0, 1}, {1, 2}, {2, 3}, {3, 0}})
+    v.walls.push_back({i, j, corners[size_t(i)], corners[size_t(j)], 0.95});
+  v.walls.push_back({4, 5, corners[4], corners[5], 0.7});
+  v.known_space.push_back({::toponav::testing::Rect(0, 0, 100, 14), {}});
+  return v;
+}
+
+// Walks the agent along the navigator's ways on a map that stays as it is (each step 'step' along the way)
+// until the navigator ends the task or 'max_steps' pass; the steps taken.
+int WalkOnFixedMap(GoalNavigator& navigator, const mapping::MapView& view, Vec2 at, double step, int max_steps) {
+  std::vector<std::vector<Vec2>> trails{{at}};
+  const std::vector<core::Observation> observations(1);
+  for (int k = 0; k < max_steps; ++k) {
+    NavigatorInput in;
+    in.step = k;
+    in.step_length = step;
+    in.view = &view;
+    in.poses = {{at.x, at.y, 0.0}};
+    in.observations = &observations;
+    in.trails = &trails;
+    std::vector<std::vector<Vec2>> ways(1);
+    if (!navigator.Plan(in, &ways)) return k;
+    if (!ways[0].empty()) {
+      const Vec2 d = ways[0].front() - at;
+      at = at + d * std::min(1.0, step / std::max(core::Norm(d), 1e-9));
+    }
+    trails[0].push_back(at);
+  }
+  return max_steps;
+}
+
+TEST(GoalNavigator, WithACrossingPriceAGoalAFalseWallCutsOffIsReachedThroughTheLeastCertainWallWithNoRecovery) {
+  const mapping::MapView view = CorridorWithAFalseWall();
+  GoalNavigatorSetup s;
+  s.goal = {95, 7};
+  s.region = {{0, 0}, {100, 14}};
+  s.planning.wall_crossing_cost = 30.0;  // the false wall: 70; each side wall: 570
+  GoalNavigator navigator(s);
+  const int steps = WalkOnFixedMap(navigator, view, {5, 7}, 1.8, 200);
+  EXPECT_EQ(navigator.end_reason(), "goal") << "after " << steps << " steps";
+  EXPECT_LE(steps, 52) << "straight down the corridor: 85 units at 1.8 a step";
+  EXPECT_EQ(navigator.counts().recovery_steps, 0);
+  EXPECT_EQ(navigator.counts().nudges, 0);
+
+  s.planning.wall_crossing_cost = 0.0;  // walls never crossed: the map seals the goal off
+  GoalNavigator sealed(s);
+  WalkOnFixedMap(sealed, view, {5, 7}, 1.8, 200);
+  EXPECT_GT(sealed.counts().recovery_steps, 0) << "no way: the recovery ran";
+}
+
 }  // namespace
 }  // namespace toponav::planning

@@ -64,6 +64,36 @@ TEST(VisibilityGraph, ClosedWallMeansNoPathNotAMagicCost) {
   EXPECT_EQ(p.status, PlanStatus::kNoPath);
 }
 
+TEST(VisibilityGraph, AWayThroughAClosedBoxCrossesItsLeastCertainWallAtThePriceOfItsOdds) {
+  // The box round the goal of ClosedWallMeansNoPathNotAMagicCost, its west wall (x = 2) less certain.
+  auto view = View({{2, -2}, {6, -2}, {6, 2}, {2, 2}}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}},
+                   {testing::Rect(-10, -10, 10, 10)});
+  view.walls[3].probability = 0.6;
+  PlannerOptions o = Fine();
+  o.wall_crossing_cost = 10.0;
+  const Path p = VisibilityGraph(view, o, false).Plan({-5, 0}, {4, 0});
+  ASSERT_TRUE(p);
+  EXPECT_NEAR(p.cost, 9.0 + 10.0 * 0.6 / 0.4, 1e-9) << "straight through the west wall: 9 long, price 15";
+  const VisibilityGraph g(view, o, false);
+  EXPECT_NEAR(g.Crossing({-5, 0}, {4, 0}, true, true), 15.0, 1e-9);
+  EXPECT_FALSE(g.Clear({-5, 0}, {4, 0})) << "Clear: without crossing anything";
+  o.wall_crossing_cost = 0.0;
+  EXPECT_FALSE(VisibilityGraph(view, o, false).Plan({-5, 0}, {4, 0})) << "0: walls are never crossed";
+}
+
+TEST(VisibilityGraph, ACertainWallIsNeverCrossedAndADetourCheaperThanThePriceIsTaken) {
+  PlannerOptions o = Fine();
+  o.wall_crossing_cost = 10.0;
+  mapping::MapView box = View({}, {}, {testing::Rect(-10, -10, 10, 10)});
+  AddWalls(&box, {{2, -2}, {6, -2}, {6, 2}, {2, 2}}, /*closed=*/true);  // the planner's own walls: certain
+  EXPECT_FALSE(VisibilityGraph(box, o, false).Plan({-5, 0}, {4, 0}));
+  // A wall 2 long across the way, p 0.9 (price 90): going round its end costs about 2 * sqrt(2) - 2 more.
+  const auto wall = View({{0, -1}, {0, 1}}, {{0, 1}}, {testing::Rect(-10, -10, 10, 10)});
+  const Path p = VisibilityGraph(wall, o, false).Plan({-1, 0}, {1, 0});
+  ASSERT_TRUE(p);
+  EXPECT_LE(p.cost, 2 * std::sqrt(2.0) + 0.25) << "round, not through";
+}
+
 TEST(VisibilityGraph, AFreeStandingWallHasNodesToGoRoundItsEndsAPlainAddedWallHasNone) {
   // A motion block or a given-up frontier piece across the way: the way round it turns at one of its ends.
   // Walls added with AddWalls (a region's edge, masked frontiers) get no graph nodes, so a way that must turn
