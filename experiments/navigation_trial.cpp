@@ -8,7 +8,6 @@
 
 #include "experiments/agent_loop.h"
 #include "experiments/map_drive.h"
-#include "planning/search_policy.h"
 #include "planning/subgoal_grid.h"
 #include "sim/paths.h"
 

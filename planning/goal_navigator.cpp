@@ -4,11 +4,11 @@
 
 #include "core/error.h"
 #include "planning/cell_estimator.h"
-#include "planning/given_up_frontiers.h"
+#include "planning/internal/given_up_frontiers.h"
 #include "planning/internal/doorway_recovery.h"
-#include "planning/motion_blocks.h"
-#include "planning/scan_walls.h"
-#include "planning/search_policy.h"
+#include "planning/internal/motion_blocks.h"
+#include "planning/internal/scan_walls.h"
+#include "planning/internal/progress.h"
 
 namespace toponav::planning {
 
@@ -22,7 +22,7 @@ namespace {
 constexpr double kRepeatTolerance = 0.05;
 constexpr int kRepeatLaps = 2;
 
-// Scan walls (planning/scan_walls.h): hit points this far apart or closer lie on one wall (a maze's walls stand
+// Scan walls (planning/internal/scan_walls.h): hit points this far apart or closer lie on one wall (a maze's walls stand
 // 14 apart, its openings are wider), walls straight to within this.
 constexpr double kScanLink = 2.0;
 constexpr double kScanTolerance = 0.3;
@@ -107,6 +107,21 @@ std::optional<GoalPlanner> ParseGoalPlanner(const std::string& name) {
 }
 
 bool NeedsTrueWorld(GoalPlanner planner) { return planner == GoalPlanner::kOracle || planner == GoalPlanner::kKnown; }
+
+int LongestHold(const std::vector<core::Vec2>& trail, double span) {
+  TOPONAV_CHECK(span >= 0, "bad hold span " << span);
+  int best = 0;
+  size_t first = 0;  // window [first, j] holds; an entry too far from some in it moves 'first' past the last such
+  for (size_t j = 0; j < trail.size(); ++j) {
+    for (size_t i = j; i-- > first;)
+      if (core::Distance(trail[i], trail[j]) > span) {
+        first = i + 1;
+        break;
+      }
+    best = std::max(best, int(j - first + 1));
+  }
+  return best;
+}
 
 // What the navigator keeps: its planner (LSP or the optimistic one), the learned estimator it feeds, the true
 // map of planner "known", and the units of its rules.

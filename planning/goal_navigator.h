@@ -68,6 +68,11 @@ struct GoalNavigatorSetup {
   const core::World* truth = nullptr;
 };
 
+// The most consecutive entries of 'trail' that all lie within 'span' of each other (HeldInPlace's test over the
+// whole trail: a goal-directed trial ends "stuck" where this reaches navigation.stuck_window; 0 for an empty
+// trail).  How near a trial that reached its goal came to that end.
+int LongestHold(const std::vector<core::Vec2>& trail, double span);
+
 class GoalNavigator : public Navigator {
  public:
   // Throws core::ConfigError where the planner needs the true world and 'truth' is not set, or does not and it is.

@@ -61,12 +61,12 @@ struct NavigationOptions {
   int cut_off_steps = 12;     // the map leaves no way to the goal, nothing to explore and no rejected vertex to
                               // look at (planning::SuspectInspector) this many steps in a row
   double inspect_reach = 8.0;  // a suspected false wall counts as looked at once the agent came this close (units)
-  // Doorway hypotheses (planning/doorways.h): openings between this wide and this wide (units)
+  // Doorway hypotheses (planning/internal/doorways.h): openings between this wide and this wide (units)
   double doorway_min_width = 8.0;
   double doorway_max_width = 24.0;
   // > 0: once the agent's last this many positions lie within stuck_span of each other (held, as stuck_window
   // counts), it plans with what its own range sensing shows round it besides the map, every step from then
-  // on: the walls of every scan since, merged (the motion's avoid_window in range; planning/scan_walls.h).
+  // on: the walls of every scan since, merged (the motion's avoid_window in range; planning/internal/scan_walls.h).
   // Below stuck_window, so a held agent gets this before the trial would end "stuck"; 0: off
   int scan_when_held = 0;
   static const core::OptionFields<NavigationOptions>& Fields();

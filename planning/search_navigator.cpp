@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "planning/sealed_region.h"
+#include "planning/internal/sealed_region.h"
 
 namespace toponav::planning {
 

@@ -22,15 +22,15 @@
 #include <vector>
 
 #include "core/world.h"
-#include "planning/dropped_walls.h"
-#include "planning/given_up_frontiers.h"
-#include "planning/map_suspects.h"
-#include "planning/motion_blocks.h"
+#include "planning/internal/dropped_walls.h"
+#include "planning/internal/given_up_frontiers.h"
+#include "planning/internal/map_suspects.h"
+#include "planning/internal/motion_blocks.h"
 #include "planning/navigator.h"
 #include "planning/navigator_options.h"
 #include "planning/planner.h"
-#include "planning/search_policy.h"
-#include "planning/vertex_inspector.h"
+#include "planning/internal/progress.h"
+#include "planning/internal/vertex_inspector.h"
 
 namespace toponav::planning {
 

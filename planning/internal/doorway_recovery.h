@@ -1,7 +1,7 @@
 #pragma once
 // The goal navigator's recovery where its planner finds no way to the goal (a goal-directed trial's goal is
 // reachable, so some wall of the map is false): in turn, the cheapest way through a doorway hypothesis
-// (planning/doorways.h); else, if some frontiers were blocked or motion blocks added, all of them taken back;
+// (planning/internal/doorways.h); else, if some frontiers were blocked or motion blocks added, all of them taken back;
 // else a frontier or a suspected false wall to look at from close by (planning::SuspectInspector).  Where the
 // agent already stands where the inspector leads it, the map walls within navigation.inspect_reach become
 // openings (planning::OpeningsNear) that this and later doorway searches try too, each until the agent makes
@@ -11,10 +11,10 @@
 
 #include "core/geometry.h"
 #include "mapping/mapping.h"
-#include "planning/doorways.h"
-#include "planning/given_up_frontiers.h"
-#include "planning/map_suspects.h"
-#include "planning/motion_blocks.h"
+#include "planning/internal/doorways.h"
+#include "planning/internal/given_up_frontiers.h"
+#include "planning/internal/map_suspects.h"
+#include "planning/internal/motion_blocks.h"
 #include "planning/navigation.h"
 #include "planning/navigator_options.h"
 

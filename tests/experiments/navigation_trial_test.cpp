@@ -5,7 +5,6 @@
 #include <string>
 
 #include "core/geometry.h"
-#include "planning/search_policy.h"
 #include "sim/worlds.h"
 #include "tests/testing/worlds.h"
 

@@ -192,5 +192,18 @@ TEST(GoalNavigator, WithACrossingPriceAGoalAFalseWallCutsOffIsReachedThroughTheL
   EXPECT_GT(sealed.counts().recovery_steps, 0) << "no way: the recovery ran";
 }
 
+TEST(LongestHold, CountsTheMostConsecutivePositionsWithinTheSpanOfEachOther) {
+  EXPECT_EQ(LongestHold({}, 3.0), 0);
+  EXPECT_EQ(LongestHold({{0, 0}}, 3.0), 1);
+  std::vector<core::Vec2> trail;
+  for (int i = 0; i < 5; ++i) trail.push_back({2.0 * i, 0});  // walking: two steps at most within 3
+  for (int i = 0; i < 7; ++i) trail.push_back({9.0 + (i % 2), 0.5 * (i % 3)});  // then held near (9.5, 0.5)
+  for (int i = 1; i < 4; ++i) trail.push_back({10.0 + 4.0 * i, 0});  // and on again
+  EXPECT_EQ(LongestHold(trail, 3.0), 8) << "(8, 0) before the hold, and the hold";
+  EXPECT_EQ(LongestHold(trail, 1.0), 2);
+  // (-1, 0) lies too far from (2, 0), the window's second entry, not from its first.
+  EXPECT_EQ(LongestHold({{0, 0}, {2, 0}, {1, 0}, {-1, 0}, {0, 0}}, 2.0), 3);
+}
+
 }  // namespace
 }  // namespace toponav::planning

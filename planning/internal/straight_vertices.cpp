@@ -1,4 +1,4 @@
-#include "planning/straight_vertices.h"
+#include "planning/internal/straight_vertices.h"
 
 #include <cmath>
 #include <map>

@@ -1,4 +1,4 @@
-#include "planning/sealed_region.h"
+#include "planning/internal/sealed_region.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// A map for the straight-vertex tests (planning/straight_vertices.h, planning/vertex_inspector.h): known space
+// A map for the straight-vertex tests (planning/internal/straight_vertices.h, planning/internal/vertex_inspector.h): known space
 // 100 x 60; along its north edge a wall from (10, 60) to (90, 60) drawn through two vertices that it runs
 // straight through (40 and 60: the jambs of an opening it covers), then south along x = 90 (a corner).
 #include <vector>

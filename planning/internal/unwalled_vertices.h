@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "mapping/mapping.h"
-#include "planning/straight_vertices.h"
+#include "planning/internal/straight_vertices.h"
 
 namespace toponav::planning {
 

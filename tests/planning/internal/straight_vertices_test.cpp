@@ -1,8 +1,8 @@
-#include "planning/straight_vertices.h"
+#include "planning/internal/straight_vertices.h"
 
 #include <gtest/gtest.h>
 
-#include "tests/planning/walled_over_opening.h"
+#include "tests/planning/internal/walled_over_opening.h"
 
 namespace toponav::planning {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // Before a search ends: agents look from close by at the map vertices that say the map may be wrong -- those
-// map walls run straight through (planning/straight_vertices.h: a walled-over doorway's jambs) and those the
-// map lacks walls for (planning/unwalled_vertices.h: a hollow building's corners).
+// map walls run straight through (planning/internal/straight_vertices.h: a walled-over doorway's jambs) and those the
+// map lacks walls for (planning/internal/unwalled_vertices.h: a hollow building's corners).
 #include <limits>
 #include <map>
 #include <set>
@@ -10,7 +10,7 @@
 #include "core/geometry.h"
 #include "mapping/mapping.h"
 #include "planning/navigation.h"
-#include "planning/straight_vertices.h"
+#include "planning/internal/straight_vertices.h"
 
 namespace toponav::planning {
 

@@ -1,4 +1,4 @@
-#include "planning/scan_walls.h"
+#include "planning/internal/scan_walls.h"
 
 #include <algorithm>
 #include <cmath>

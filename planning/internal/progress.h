@@ -1,7 +1,8 @@
 #pragma once
-// The pieces of the frontier-search policy, each a small unit: commitment to a chosen frontier (hysteresis),
-// counting the steps agents dwell next to a frontier that does not go away (push-through, then give-up), and
-// detecting agents that make no headway (nudges).  planning::SearchNavigator and planning::GoalNavigator compose them with a planner.
+// The navigators' rules on the agents' progress, each a small unit: commitment to a chosen frontier
+// (hysteresis), counting the steps agents dwell next to a frontier that does not go away (push-through, then
+// give-up), and detecting agents that make no headway (nudges).  planning::SearchNavigator and
+// planning::GoalNavigator compose them with a planner.
 #include <map>
 #include <optional>
 #include <vector>
@@ -101,9 +102,5 @@ bool HeldInPlace(const std::vector<core::Vec2>& trail, const core::Vec2& now, in
 bool RepeatedStep(const std::vector<core::Vec2>& trail, const core::Vec2& now, int max_period, int laps,
                   double tolerance);
 
-// The most consecutive entries of 'trail' that all lie within 'span' of each other (HeldInPlace's test over the
-// whole trail: a goal-directed trial ends "stuck" where this reaches navigation.stuck_window; 0 for an empty
-// trail).  How near a trial that reached its goal came to that end.
-int LongestHold(const std::vector<core::Vec2>& trail, double span);
 
 }  // namespace toponav::planning

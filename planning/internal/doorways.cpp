@@ -1,4 +1,4 @@
-#include "planning/doorways.h"
+#include "planning/internal/doorways.h"
 
 #include <algorithm>
 #include <climits>

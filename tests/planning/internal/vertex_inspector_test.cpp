@@ -1,8 +1,8 @@
-#include "planning/vertex_inspector.h"
+#include "planning/internal/vertex_inspector.h"
 
 #include <gtest/gtest.h>
 
-#include "tests/planning/walled_over_opening.h"
+#include "tests/planning/internal/walled_over_opening.h"
 
 #include "core/error.h"
 

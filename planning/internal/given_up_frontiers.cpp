@@ -1,4 +1,4 @@
-#include "planning/given_up_frontiers.h"
+#include "planning/internal/given_up_frontiers.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "planning/dropped_walls.h"
+#include "planning/internal/dropped_walls.h"
 
 #include <cmath>
 

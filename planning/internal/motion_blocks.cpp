@@ -1,4 +1,4 @@
-#include "planning/motion_blocks.h"
+#include "planning/internal/motion_blocks.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "planning/map_suspects.h"
+#include "planning/internal/map_suspects.h"
 
 #include <cmath>
 

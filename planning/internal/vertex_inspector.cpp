@@ -1,10 +1,10 @@
-#include "planning/vertex_inspector.h"
+#include "planning/internal/vertex_inspector.h"
 
 #include <cmath>
 #include <limits>
 
 #include "core/error.h"
-#include "planning/unwalled_vertices.h"
+#include "planning/internal/unwalled_vertices.h"
 
 namespace toponav::planning {
 

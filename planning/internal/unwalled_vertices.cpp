@@ -1,4 +1,4 @@
-#include "planning/unwalled_vertices.h"
+#include "planning/internal/unwalled_vertices.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "planning/search_policy.h"
+#include "planning/internal/progress.h"
 
 #include "core/error.h"
 
@@ -133,21 +133,6 @@ bool RepeatedStep(const std::vector<Vec2>& trail, const Vec2& now, int max_perio
     if (all) return true;
   }
   return false;
-}
-
-int LongestHold(const std::vector<core::Vec2>& trail, double span) {
-  TOPONAV_CHECK(span >= 0, "bad hold span " << span);
-  int best = 0;
-  size_t first = 0;  // window [first, j] holds; an entry too far from some in it moves 'first' past the last such
-  for (size_t j = 0; j < trail.size(); ++j) {
-    for (size_t i = j; i-- > first;)
-      if (core::Distance(trail[i], trail[j]) > span) {
-        first = i + 1;
-        break;
-      }
-    best = std::max(best, int(j - first + 1));
-  }
-  return best;
 }
 
 }  // namespace toponav::planning
