@@ -25,7 +25,6 @@ planning::GoalNavigatorSetup GoalSetup(const core::World& world, const Config& c
   s.region = world.bounds;
   s.step_length = MotionFor(config, world).step_length;
   s.navigation = config.navigation;
-  s.search = config.search;
   s.planning = config.planning;
   s.lsp = config.lsp;
   if (planning::NeedsTrueWorld(planner)) s.truth = &world;

@@ -56,7 +56,6 @@ planning::SearchNavigatorSetup SearchSetup(const core::World& world, const Confi
   s.closed = world.has_boundary();
   s.step_length = MotionFor(config, world).step_length;
   s.search = config.search;
-  s.navigation = config.navigation;
   s.planning = config.planning;
   return s;
 }

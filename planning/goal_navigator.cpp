@@ -127,14 +127,14 @@ int LongestHold(const std::vector<core::Vec2>& trail, double span) {
 // map of planner "known", and the units of its rules.
 struct GoalNavigator::Parts {
   explicit Parts(const GoalNavigatorSetup& s)
-      : stuck(1, s.search.stuck_steps, s.step_length),
-        blocked(s.search.give_up_reach, s.search.give_up_probe_radius),
+      : stuck(1, s.navigation.stuck_steps, s.step_length),
+        blocked(s.navigation.give_up_reach, s.navigation.give_up_probe_radius),
         recovery(s.navigation, s.planning, s.goal) {
     if (s.planner == GoalPlanner::kKnown) {
       true_map = WithRegionWalls(TrueMap(*s.truth), s.region);
       true_graph.emplace(*true_map, s.planning, false);
-    } else if (s.search.block_when_stuck) {
-      blocks.emplace(1, s.search.stuck_steps, s.step_length, 2 * s.step_length, s.planning.clearance + 0.5);
+    } else if (s.navigation.block_when_stuck) {
+      blocks.emplace(1, s.navigation.stuck_steps, s.step_length, 2 * s.step_length, s.planning.clearance + 0.5);
     }
     if (s.planner == GoalPlanner::kOptimistic || s.planner == GoalPlanner::kKnown) {
       optimistic = CreatePlanner(PlannerKind::kOptimistic);
@@ -160,14 +160,13 @@ struct GoalNavigator::Parts {
   std::optional<VisibilityGraph> true_graph;
   StuckMonitor stuck;
   GivenUpFrontiers blocked;                  // frontiers the agent was stuck at, blocked where it stood
-  std::optional<MotionBlocks> blocks;        // search.block_when_stuck, not for known
+  std::optional<MotionBlocks> blocks;        // navigation.block_when_stuck, not for known
   internal::DoorwayRecovery recovery;
   ScanWallSet scan_walls{kScanLink, kScanTolerance};  // every scan's walls, merged
 };
 
 GoalNavigator::GoalNavigator(const GoalNavigatorSetup& setup) : setup_(setup) {
   CheckTruth(setup);
-  setup.search.Validate();
   parts_ = std::make_unique<Parts>(setup_);
 }
 
@@ -288,7 +287,7 @@ StepResponse GoalNavigator::AfterStep(const NavigatorInput& in, int agent, const
     return response;
   }
   const int blocked =
-      parts_->true_map ? -1 : NearestFrontier(in.view->frontiers, at, setup_.search.give_up_distance);
+      parts_->true_map ? -1 : NearestFrontier(in.view->frontiers, at, setup_.navigation.give_up_distance);
   if (blocked >= 0)
     parts_->blocked.GiveUp(blocked, in.view->frontiers, &at);
   else if (blocks && has_path && !trail.empty())

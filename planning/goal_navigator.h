@@ -11,7 +11,7 @@
 // (navigation.scan_when_held); the view the planner gets (the map, the region's edges as walls, the blocked
 // frontier parts, motion blocks and scan walls as free-standing walls); the planner's way; where it finds none,
 // the recovery (planning/internal/doorway_recovery.h).  After the agent steps, an agent that made no headway
-// (no motion, pacing, held in place, the third lap of a loop) is due for a nudge once search.stuck_steps such
+// (no motion, pacing, held in place, the third lap of a loop) is due for a nudge once navigation.stuck_steps such
 // steps added up: the frontier it stands at is blocked where it stood, or a motion block goes across its way.
 // Where it made no headway along its way (a motion block's count, or a nudge), the map wall that way crosses
 // close ahead is reported as contact evidence: the map makes it certain, and no way crosses it again.
@@ -60,7 +60,6 @@ struct GoalNavigatorSetup {
   core::Aabb2 region;        // the extent the world lies in, known to the agent: its edges are walls to the planner
   double step_length = 1.8;  // the agent's step (world units)
   NavigationOptions navigation;
-  SearchOptions search;      // stuck_steps, give_up_*, block_when_stuck
   PlannerOptions planning;
   LspOptions lsp;
   // Privileged information: the true world, for the planners defined by knowing it (oracle, known) and for

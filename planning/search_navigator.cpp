@@ -39,8 +39,8 @@ SearchNavigator::SearchNavigator(const SearchNavigatorSetup& s)
   inspection.looks = s.search.give_up_steps;
   if (inspection.max_bend > 0 || inspection.unwalled_detections > 0) inspector_.emplace(inspection);
   if (search_.sealed_reach > 0 && s.closed)
-    sealed_.emplace(s.navigation.inspect_reach, planning_.inflation_radius + planning_.clearance,
-                    s.navigation.inspect_reach);
+    sealed_.emplace(s.search.inspect_reach, planning_.inflation_radius + planning_.clearance,
+                    s.search.inspect_reach);
 }
 
 bool SearchNavigator::ChooseSealedSuspects(const mapping::MapView& view, const VisibilityGraph& graph,

@@ -40,7 +40,6 @@ struct SearchNavigatorSetup {
   bool closed = true;        // a closed world (walled round); an open world is searched inside its bounds
   double step_length = 1.8;  // the agents' step (world units)
   SearchOptions search;
-  NavigationOptions navigation;  // inspect_reach (search.sealed_reach)
   PlannerOptions planning;
 };
 

@@ -235,10 +235,10 @@ TEST(NavigationTrial, AnAgentMakingNoHeadwayAtAWallTheMapLacksInKnownSpaceGoesRo
   // Tuning maze 7395, optimistic, from a pose the trial from the maze's start passed: the way to the goal runs
   // through a true wall the map lacks, inside known space with no frontier near it to block, and an agent that
   // only nudged pressed at it until the step cap (200 steps; from the maze's start it ended "stuck" after
-  // 305).  Steps without headway put a short wall across the way there (search.block_when_stuck), and the
+  // 305).  Steps without headway put a short wall across the way there (navigation.block_when_stuck), and the
   // agent's pacing in front of the wall counts as no headway.
   Config cfg = LoadConfig(TOPONAV_SOURCE_DIR "/configs/maze/paper.yaml");
-  ASSERT_TRUE(cfg.search.block_when_stuck);
+  ASSERT_TRUE(cfg.navigation.block_when_stuck);
   core::World world = sim::GenerateWorld(core::WorldKind::kGuidedMaze, cfg.worlds, 7395);
   world.start = {-44, -10.8, 3.5};
   NavigationTrialOptions o;
