@@ -1,5 +1,6 @@
 #include "planning/goal_navigator.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/error.h"
@@ -221,6 +222,14 @@ void GoalNavigator::Decide(const NavigatorInput& in, const mapping::MapView& vie
   const PlanningProblem problem{&view, &graph, &targets, {at}, setup_.goal};
   choice_ = parts_->planner().Plan(problem).at(0);
   estimates_ = parts_->lsp ? Estimates(parts_->lsp->decision()) : std::vector<FrontierEstimate>{};
+  // Commitment: the map walls this way crosses cost half their odds next step (PlannerView), so a way does not
+  // flip between crossings of different walls as the map is sampled again.
+  crossed_.clear();
+  if (choice_.status == PlanStatus::kFound)
+    for (size_t i = 1; i < choice_.path.points.size(); ++i)
+      for (const auto& w : in.view->walls)
+        if (!w.certain && core::SegmentsIntersect({choice_.path.points[i - 1], choice_.path.points[i]}, {w.pa, w.pb}))
+          crossed_.push_back({w.a, w.b});
   parts_->recovery.Reset();
   if (choice_.status == PlanStatus::kFound || parts_->true_map) return;
   ++counts_.recovery_steps;
@@ -232,6 +241,12 @@ void GoalNavigator::Decide(const NavigatorInput& in, const mapping::MapView& vie
 // free-standing walls (in that order: the scan walls last).
 mapping::MapView GoalNavigator::PlannerView(const mapping::MapView& map) const {
   mapping::MapView view = WithRegionWalls(map, setup_.region);
+  for (auto& w : view.walls)
+    for (const auto& [a, b] : crossed_)
+      if (!w.certain && w.a == a && w.b == b) {
+        const double odds = 0.5 * w.probability / std::max(1e-9, 1.0 - w.probability);
+        w.probability = odds / (1.0 + odds);
+      }
   AddFreeStandingWalls(&view, parts_->blocked.probed());
   if (parts_->blocks && !parts_->blocks->blocks().empty()) view = parts_->blocks->With(view);
   AddFreeStandingWalls(&view, parts_->scan_walls.walls());

@@ -111,6 +111,7 @@ class GoalNavigator : public Navigator {
   GoalNavigatorSetup setup_;
   std::unique_ptr<Parts> parts_;
   FrontierChoice choice_;
+  std::vector<std::pair<int, int>> crossed_;  // the map walls the last way crossed (vertex ids)
   std::vector<FrontierEstimate> estimates_;
   Counts counts_;
   bool scanning_ = false;

@@ -192,6 +192,47 @@ TEST(GoalNavigator, WithACrossingPriceAGoalAFalseWallCutsOffIsReachedThroughTheL
   EXPECT_GT(sealed.counts().recovery_steps, 0) << "no way: the recovery ran";
 }
 
+// Two lanes to the goal either side of a certain divider, each crossed by a false wall: the way takes the less
+// certain one, and keeps it when the map makes that wall a little more certain than the other next step.
+TEST(GoalNavigator, TheWayKeepsToTheWallItCrossedLastUnlessAnotherBecomesMuchCheaper) {
+  mapping::MapView view;
+  const std::vector<Vec2> corners{{50, 0}, {50, 20}, {50, 40}};
+  for (size_t i = 0; i < corners.size(); ++i) view.vertices.push_back({int(i), corners[i], {}, 9});
+  view.walls.push_back({0, 1, corners[0], corners[1], 0.70});  // lane A (y < 20)
+  view.walls.push_back({1, 2, corners[1], corners[2], 0.72});  // lane B (y > 20)
+  view.known_space.push_back({::toponav::testing::Rect(0, 0, 100, 40), {}});
+  AddFreeStandingWall(&view, {{20, 20}, {80, 20}});  // the divider
+  GoalNavigatorSetup s;
+  s.goal = {90, 20};
+  s.region = {{0, 0}, {100, 40}};
+  s.planning.wall_crossing_cost = 10.0;
+  std::vector<std::vector<Vec2>> trails{{{10, 20}}};
+  const std::vector<core::Observation> observations(1);
+  NavigatorInput in;
+  in.step_length = 1.8;
+  in.view = &view;
+  in.poses = {{10, 20, 0.0}};
+  in.observations = &observations;
+  in.trails = &trails;
+  const auto lane_of_crossing = [&](GoalNavigator& navigator) {
+    std::vector<Vec2> way;
+    navigator.on_decision = [&](const NavigationDecision& d) { way = d.way; };
+    std::vector<std::vector<Vec2>> ways(1);
+    EXPECT_TRUE(navigator.Plan(in, &ways));
+    for (size_t i = 1; i < way.size(); ++i)
+      if ((way[i - 1].x - 50) * (way[i].x - 50) <= 0) return 0.5 * (way[i - 1].y + way[i].y) < 20 ? 'A' : 'B';
+    return '?';
+  };
+  GoalNavigator navigator(s);
+  EXPECT_EQ(lane_of_crossing(navigator), 'A');
+  view.walls[0].probability = 0.73;  // now a little more certain than B's
+  EXPECT_EQ(lane_of_crossing(navigator), 'A') << "committed: the wall crossed last costs half its odds";
+  GoalNavigator fresh(s);
+  EXPECT_EQ(lane_of_crossing(fresh), 'B') << "without a way before, the cheaper crossing";
+  view.walls[0].probability = 0.9;  // odds 9, halved 4.5: B's 2.6 wins
+  EXPECT_EQ(lane_of_crossing(navigator), 'B');
+}
+
 TEST(LongestHold, CountsTheMostConsecutivePositionsWithinTheSpanOfEachOther) {
   EXPECT_EQ(LongestHold({}, 3.0), 0);
   EXPECT_EQ(LongestHold({{0, 0}}, 3.0), 1);
