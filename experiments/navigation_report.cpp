@@ -113,11 +113,11 @@ std::string NavigationMarkdown(const std::vector<NavigationReportRow>& rows, con
       std::snprintf(reduction, sizeof reduction, "%.1f %% (%d seeds)", 100 * r.reduction, r.paired);
     if (!std::isnan(r.median_ratio)) std::snprintf(ratio, sizeof ratio, "%.3f", r.median_ratio);
     if (!std::isnan(r.over_shortest)) std::snprintf(detour, sizeof detour, "%.3f", r.over_shortest);
-    char buf[640];
-    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %s | %.1f | %.4f | %d | %.1f | %s |\n",
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "| %s | %s | %d/%d | %.1f | %.0f | %s | %s | %s | %.1f | %.4f | %d | %.1f | ",
                   core::ToString(r.kind), r.planner.c_str(), r.reached, r.trials, r.mean_cost, r.total_cost, reduction,
-                  ratio, detour, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s, r.inputs.c_str());
-    os << buf;
+                  ratio, detour, r.mean_steps, r.mean_iou, r.failed, r.mean_wall_s);
+    os << buf << r.inputs << " |\n";  // the inputs may be long: not through the fixed buffer
   }
   std::vector<std::string> short_of_goal;
   for (const auto& r : records)

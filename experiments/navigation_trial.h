@@ -67,7 +67,7 @@ struct NavigationResult {
   int repeated_steps = 0;  // steps of a third or later lap of the same loop, with a path (planning::RepeatedStep)
   int scan_steps = 0;      // steps planned with the range ring's scans, after a hold (navigation.scan_when_held)
   std::vector<core::Segment2> scan_walls;  // the walls those scans showed, merged (planning::ScanWallSet)
-  std::vector<core::Segment2> blocks;  // every motion block added (search.block_when_stuck), taken back or not
+  std::vector<core::Segment2> blocks;  // every motion block added (navigation.block_when_stuck), taken back or not
   double iou = 0.0;               // known space of the final map vs the true free space
   double wall_time_s = 0.0;
   std::vector<core::Vec2> path;

@@ -2,8 +2,8 @@
 // The learned vertex sensor as an image detector: the vertex network (a model file written by `toponav
 // train`) on each panorama, its output decoded into detections (learning/peaks.h).  Composed with the
 // renderer by the sensor factory (`sensor: {kind: learned, model: PATH}`).  A subgoal model given a goal also
-// fills the observation's cells with its subgoal outputs (channels "ps" a probability, "delta_success",
-// "exploration"), which planner 'lsp' averages per frontier.
+// fills the observation's subgoal cells (core::SubgoalCells: Ps a probability, the success and exploration
+// costs), which planner 'lsp' averages per frontier.
 #include <memory>
 #include <string>
 

@@ -23,8 +23,8 @@ namespace {
 constexpr double kRepeatTolerance = 0.05;
 constexpr int kRepeatLaps = 2;
 
-// Scan walls (planning/internal/scan_walls.h): hit points this far apart or closer lie on one wall (a maze's walls stand
-// 14 apart, its openings are wider), walls straight to within this.
+// Scan walls (planning/internal/scan_walls.h): hit points this far apart or closer lie on one wall (a maze's walls
+// stand 14 apart, its openings are wider), walls straight to within this.
 constexpr double kScanLink = 2.0;
 constexpr double kScanTolerance = 0.3;
 

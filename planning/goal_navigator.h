@@ -3,16 +3,17 @@
 // the optimistic baseline, Learned Subgoal Planning with the sensor's subgoal estimates ("lsp"), LSP with the
 // true frontier properties ("oracle") or the optimistic planner on the true walls ("known") -- choosing the way
 // on the map built so far.  The task ends when the agent is within navigation.goal_radius of the goal ("goal"),
-// is held in place navigation.stuck_window steps ("stuck"), or finds the goal cut off for
-// navigation.cut_off_steps steps ("cut_off"); the harness's step cap ends it otherwise.
+// is held in place NavigationOptions::stuck_window steps ("stuck"), or finds the goal cut off for
+// NavigationOptions::cut_off_steps steps ("cut_off"); the harness's step cap ends it otherwise.
 //
 // Each step, in order: the goal test; the subgoal estimates of this step's observations to the LSP estimator;
 // the stuck test; the blocked frontiers brought up to date; the range ring's scans once the agent is held
 // (navigation.scan_when_held); the view the planner gets (the map, the region's edges as walls, the blocked
 // frontier parts, motion blocks and scan walls as free-standing walls); the planner's way; where it finds none,
 // the recovery (planning/internal/doorway_recovery.h).  After the agent steps, an agent that made no headway
-// (no motion, pacing, held in place, the third lap of a loop) is due for a nudge once navigation.stuck_steps such
-// steps added up: the frontier it stands at is blocked where it stood, or a motion block goes across its way.
+// (no motion, pacing, held in place, the third lap of a loop) is due for a nudge once
+// NavigationOptions::stuck_steps such steps added up: the frontier it stands at is blocked where it stood, or a
+// motion block goes across its way.
 // Where it made no headway along its way (a motion block's count, or a nudge), the map wall that way crosses
 // close ahead is reported as contact evidence: the map makes it certain, and no way crosses it again.
 #include <functional>
@@ -68,7 +69,7 @@ struct GoalNavigatorSetup {
 };
 
 // The most consecutive entries of 'trail' that all lie within 'span' of each other (HeldInPlace's test over the
-// whole trail: a goal-directed trial ends "stuck" where this reaches navigation.stuck_window; 0 for an empty
+// whole trail: a goal-directed trial ends "stuck" where this reaches NavigationOptions::stuck_window; 0 for an empty
 // trail).  How near a trial that reached its goal came to that end.
 int LongestHold(const std::vector<core::Vec2>& trail, double span);
 

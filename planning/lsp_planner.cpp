@@ -61,7 +61,8 @@ LspPlanner::LspPlanner(std::shared_ptr<SubgoalEstimator> estimator, const LspOpt
 }
 
 std::vector<FrontierChoice> LspPlanner::Plan(const PlanningProblem& p) {
-  TOPONAV_CHECK(p.view && p.graph && p.targets && p.goal && p.agents.size() == 1, "LSP plans for one agent with a goal");
+  TOPONAV_CHECK(p.view && p.graph && p.targets && p.goal && p.agents.size() == 1,
+                "LSP plans for one agent with a goal");
   decision_ = {};
   FrontierChoice c;
   const int piece = ChooseSubgoal(p);
@@ -135,8 +136,8 @@ std::unique_ptr<SubgoalEstimator> CreateOracleEstimator(const core::World& world
 }
 
 std::unique_ptr<LspPlanner> CreateLspPlanner(std::shared_ptr<SubgoalEstimator> estimator, const LspOptions& options,
-                                          const PlannerOptions& planning, std::optional<core::Aabb2> region,
-                                          std::string name) {
+                                             const PlannerOptions& planning, std::optional<core::Aabb2> region,
+                                             std::string name) {
   return std::make_unique<LspPlanner>(std::move(estimator), options, planning, region, std::move(name));
 }
 

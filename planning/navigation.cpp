@@ -43,10 +43,10 @@ namespace {
 
 // A way may cross a map wall the map is not certain of at 'cost' times its odds, the wall's probability
 // taken at most kMaxWallProbability (only what is certain is never crossed); 'cost' 0: never.
-constexpr double kMaxWallProbability = 0.99;
+constexpr double kMinWallProbability = 0.01, kMaxWallProbability = 0.99;
 double CrossingPrice(const mapping::MapWall& w, double cost) {
   if (w.certain || cost <= 0) return std::numeric_limits<double>::infinity();
-  const double p = std::clamp(w.probability, 0.0, kMaxWallProbability);
+  const double p = std::clamp(w.probability, kMinWallProbability, kMaxWallProbability);
   return cost * p / (1.0 - p);
 }
 
@@ -227,8 +227,13 @@ std::vector<Path> VisibilityGraph::PlanToMany(const Vec2& start, const std::vect
   }
   std::vector<Vec2> dear_goals;
   for (size_t k : dear) dear_goals.push_back(goals[k]);
+  // The crossing query links the ends by crossing edges where the wall-free one fell back to edges that cross no
+  // wall at all (an end within the clearance of a wall), so it is not always the cheaper: keep the better.
   const std::vector<Path> crossing = Query(*crossing_graph_, start, dear_goals, true);
-  for (size_t i = 0; i < dear.size(); ++i) out[dear[i]] = crossing[i];
+  for (size_t i = 0; i < dear.size(); ++i) {
+    Path& best = out[dear[i]];
+    if (crossing[i] && (!best || crossing[i].cost < best.cost)) best = crossing[i];
+  }
   return out;
 }
 

@@ -87,7 +87,9 @@ class VisibilityGraph {
   double min_price_ = std::numeric_limits<double>::infinity();  // the least of them
   std::vector<core::Vec2> nodes_;
   Graph graph_;                                  // edges that cross no wall
-  mutable std::optional<Graph> crossing_graph_;  // and those that do, built when a query first needs them
+  // ... and those that do, built when a query first needs them: a const query may write it, so one graph is not
+  // for several threads at once (num_edges() counts graph_ only).
+  mutable std::optional<Graph> crossing_graph_;
 };
 
 // True if p lies in the view's known space (its double-precision polygons, as the graph's rules use them).

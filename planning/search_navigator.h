@@ -5,8 +5,8 @@
 // through all of them; distinct frontiers for a team); agents keep their frontier while it stays competitive
 // (commitment); frontiers agents stand next to without them going away, or cannot get to, are given up;
 // stuck agents are nudged.  The search ends when no frontier is left ("explored") or none has been reachable
-// for search.unreachable_steps steps ("unreachable").  With search.block_when_stuck, where an agent's steps make
-// no headway along its path the planners get a short wall across its way (MotionBlocks); with
+// for SearchOptions::unreachable_steps steps ("unreachable").  With search.block_when_stuck, where an agent's
+// steps make no headway along its path the planners get a short wall across its way (MotionBlocks); with
 // search.close_buildings, in open worlds a building's last side (ClosesWallChain) is no target; with
 // search.dropped_wall_steps, neither is a frontier along a wall the map held and has left out since
 // (DroppedWalls); with search.inspect_bend and search.inspect_unwalled, once no frontier is left

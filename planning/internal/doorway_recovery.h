@@ -3,7 +3,7 @@
 // reachable, so some wall of the map is false): in turn, the cheapest way through a doorway hypothesis
 // (planning/internal/doorways.h); else, if some frontiers were blocked or motion blocks added, all of them taken back;
 // else a frontier or a suspected false wall to look at from close by (planning::SuspectInspector).  Where the
-// agent already stands where the inspector leads it, the map walls within navigation.inspect_reach become
+// agent already stands where the inspector leads it, the map walls within NavigationOptions::inspect_reach become
 // openings (planning::OpeningsNear) that this and later doorway searches try too, each until the agent makes
 // no headway through it.
 #include <optional>

@@ -94,8 +94,10 @@ mapping::MapView WithDoorway(const mapping::MapView& view, const Doorway& doorwa
   const int ja = next_id + 1, jb = next_id + 2;
   v.vertices.push_back({ja, doorway.a, {}, 0});
   v.vertices.push_back({jb, doorway.b, {}, 0});
-  if (core::Distance(wall.pa, doorway.a) > 1e-6) v.walls.push_back({wall.a, ja, wall.pa, doorway.a, wall.probability, wall.certain});
-  if (core::Distance(doorway.b, wall.pb) > 1e-6) v.walls.push_back({jb, wall.b, doorway.b, wall.pb, wall.probability, wall.certain});
+  if (core::Distance(wall.pa, doorway.a) > 1e-6)
+    v.walls.push_back({wall.a, ja, wall.pa, doorway.a, wall.probability, wall.certain});
+  if (core::Distance(doorway.b, wall.pb) > 1e-6)
+    v.walls.push_back({jb, wall.b, doorway.b, wall.pb, wall.probability, wall.certain});
   return v;
 }
 
