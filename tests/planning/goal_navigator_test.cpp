@@ -164,10 +164,14 @@ int WalkOnFixedMap(GoalNavigator& navigator, const mapping::MapView& view, Vec2 
     in.trails = &trails;
     std::vector<std::vector<Vec2>> ways(1);
     if (!navigator.Plan(in, &ways)) return k;
+    const Vec2 before = at;
     if (!ways[0].empty()) {
       const Vec2 d = ways[0].front() - at;
       at = at + d * std::min(1.0, step / std::max(core::Norm(d), 1e-9));
     }
+    core::Rng rng{static_cast<uint64_t>(k)};
+    const StepResponse r = navigator.AfterStep(in, 0, {{at.x, at.y, 0.0}, core::Distance(before, at), false}, rng);
+    if (r.nudge) at = at + *r.nudge;
     trails[0].push_back(at);
   }
   return max_steps;
