@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "tests/planning/dead_end_view.h"
+#include "tests/planning/one_agent_step.h"
 #include "tests/testing/worlds.h"
 
 namespace toponav::planning {
@@ -210,14 +211,8 @@ TEST(GoalNavigator, TheWayKeepsToTheWallItCrossedLastUnlessAnotherBecomesMuchChe
   s.goal = {90, 20};
   s.region = {{0, 0}, {100, 40}};
   s.planning.wall_crossing_cost = 10.0;
-  std::vector<std::vector<Vec2>> trails{{{10, 20}}};
-  const std::vector<core::Observation> observations(1);
-  NavigatorInput in;
-  in.step_length = 1.8;
-  in.view = &view;
-  in.poses = {{10, 20, 0.0}};
-  in.observations = &observations;
-  in.trails = &trails;
+  const testing::OneAgentStep at_start(view, {10, 20});
+  const NavigatorInput& in = at_start.input;
   const auto lane_of_crossing = [&](GoalNavigator& navigator) {
     std::vector<Vec2> way;
     navigator.on_decision = [&](const NavigationDecision& d) { way = d.way; };

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/planning/one_agent_step.h"
 #include "tests/testing/worlds.h"
 
 namespace toponav::planning {
@@ -29,15 +30,9 @@ struct PlanResult {
 
 // One step of 'navigator' from (20, 20) on 'view'.
 PlanResult PlanStep(SearchNavigator& navigator, const mapping::MapView& view) {
-  const std::vector<std::vector<Vec2>> trails{{{20, 20}}};
-  const std::vector<core::Observation> observations(1);
-  NavigatorInput state;
+  testing::OneAgentStep step(view, {20, 20});
+  NavigatorInput& state = step.input;
   state.max_steps = 400;
-  state.view = &view;
-  state.poses = {{20, 20, 0}};
-  state.observations = &observations;
-  state.trails = &trails;
-  state.step_length = 1.8;
   std::vector<std::vector<Vec2>> paths(1);
   PlanResult r;
   navigator.on_plan = [&](const NavigatorInput&, const std::vector<FrontierTarget>&,
